@@ -1,0 +1,144 @@
+!> The mesh as read from a file: nodes, 2D elements, and named sets.
+!>
+!> Conventions (doc/user-guide.md, "Mesh conventions"):
+!> - coordinates components first, x(2, nnode); internal node and element
+!>   indices are 1..n in file order, the file's ids kept in node_id/elem_id
+!>   for messages and output;
+!> - element nodes follow the Gmsh/Abaqus order: corners 1-4 counter-clockwise,
+!>   then (Q8) mid-side nodes 5 (edge 1-2), 6 (2-3), 7 (3-4), 8 (4-1);
+!> - an element set is a Gmsh physical surface or an Abaqus *ELSET;
+!>   a node set is a Gmsh physical curve/point or an Abaqus *NSET
+!>   (each surface also gives the node set of the same name);
+!> - a surface is a chain of element edges (Gmsh physical curve, Abaqus
+!>   *SURFACE); each edge stores its nodes as (start, end, mid) ordered
+!>   counter-clockwise around its parent element, so the outward normal is the
+!>   tangent (end - start) turned clockwise.
+module raccord_mesh
+  use raccord_kinds, only: wp
+  implicit none
+  private
+
+  integer, parameter, public :: ELEM_Q4 = 1   !< 4-node bilinear quadrilateral (Q1)
+  integer, parameter, public :: ELEM_Q8 = 2   !< 8-node serendipity quadrilateral (Q2)
+  integer, parameter, public :: MAX_NEN = 8   !< most nodes of any supported element
+
+  !> Named set of nodes (internal indices, sorted, unique).
+  type, public :: node_set_t
+    character(len=:), allocatable :: name
+    integer, allocatable :: nodes(:)
+  end type node_set_t
+
+  !> Named set of elements (internal indices).
+  type, public :: elem_set_t
+    character(len=:), allocatable :: name
+    integer, allocatable :: elems(:)
+  end type elem_set_t
+
+  !> Named surface: element edges with their parent element and local side.
+  type, public :: surface_t
+    character(len=:), allocatable :: name
+    integer :: nedge = 0
+    integer :: nen_edge = 2                 !< 2 (Q4 edges) or 3 (Q8 edges)
+    integer, allocatable :: edge(:,:)       !< (3, nedge): start, end, mid (0 for 2-node edges)
+    integer, allocatable :: elem(:)         !< parent element of each edge
+    integer, allocatable :: side(:)         !< local side 1..4 in the parent (1: nodes 1-2, ...)
+  end type surface_t
+
+  !> Whole mesh.
+  type, public :: mesh_t
+    character(len=:), allocatable :: source   !< file it was read from
+    integer :: nnode = 0
+    integer :: nelem = 0
+    real(wp), allocatable :: x(:,:)           !< (2, nnode) coordinates
+    integer, allocatable :: node_id(:)        !< file id of each node
+    integer, allocatable :: etype(:)          !< ELEM_Q4 or ELEM_Q8 per element
+    integer, allocatable :: conn(:,:)         !< (MAX_NEN, nelem) internal node indices, 0-padded
+    integer, allocatable :: elem_id(:)        !< file id of each element
+    type(node_set_t), allocatable :: nsets(:)
+    type(elem_set_t), allocatable :: esets(:)
+    type(surface_t), allocatable :: surfaces(:)
+  end type mesh_t
+
+  public :: nodes_per_element, element_name
+  public :: find_node_set, find_elem_set, find_surface, side_nodes
+
+contains
+
+  !> Number of nodes of an element type (0 for an unknown type).
+  pure integer function nodes_per_element(etype)
+    integer, intent(in) :: etype
+    select case (etype)
+    case (ELEM_Q4); nodes_per_element = 4
+    case (ELEM_Q8); nodes_per_element = 8
+    case default;   nodes_per_element = 0
+    end select
+  end function nodes_per_element
+
+  !> Short name of an element type for messages and logs.
+  pure function element_name(etype) result(s)
+    integer, intent(in) :: etype
+    character(len=:), allocatable :: s
+    select case (etype)
+    case (ELEM_Q4); s = 'Q4'
+    case (ELEM_Q8); s = 'Q8'
+    case default;   s = 'unknown'
+    end select
+  end function element_name
+
+  !> Local node numbers (start, end, mid) of side 1..4 of an element type;
+  !> mid is 0 for Q4. Counter-clockwise, so the outward normal is the
+  !> tangent turned clockwise.
+  pure function side_nodes(etype, side) result(loc)
+    integer, intent(in) :: etype, side
+    integer :: loc(3)
+    integer, parameter :: corner(2, 4) = reshape([1, 2, 2, 3, 3, 4, 4, 1], [2, 4])
+    loc(1:2) = corner(:, side)
+    loc(3) = 0
+    if (etype == ELEM_Q8) loc(3) = 4 + side
+  end function side_nodes
+
+  !> Index of the node set with that name (case-sensitive), or 0.
+  pure integer function find_node_set(mesh, name)
+    type(mesh_t), intent(in) :: mesh
+    character(len=*), intent(in) :: name
+    integer :: k
+    find_node_set = 0
+    if (.not. allocated(mesh%nsets)) return
+    do k = 1, size(mesh%nsets)
+      if (mesh%nsets(k)%name == trim(name)) then
+        find_node_set = k
+        return
+      end if
+    end do
+  end function find_node_set
+
+  !> Index of the element set with that name, or 0.
+  pure integer function find_elem_set(mesh, name)
+    type(mesh_t), intent(in) :: mesh
+    character(len=*), intent(in) :: name
+    integer :: k
+    find_elem_set = 0
+    if (.not. allocated(mesh%esets)) return
+    do k = 1, size(mesh%esets)
+      if (mesh%esets(k)%name == trim(name)) then
+        find_elem_set = k
+        return
+      end if
+    end do
+  end function find_elem_set
+
+  !> Index of the surface with that name, or 0.
+  pure integer function find_surface(mesh, name)
+    type(mesh_t), intent(in) :: mesh
+    character(len=*), intent(in) :: name
+    integer :: k
+    find_surface = 0
+    if (.not. allocated(mesh%surfaces)) return
+    do k = 1, size(mesh%surfaces)
+      if (mesh%surfaces(k)%name == trim(name)) then
+        find_surface = k
+        return
+      end if
+    end do
+  end function find_surface
+end module raccord_mesh

@@ -1,0 +1,111 @@
+!> The scene: everything a run is asked to do, as read from the deck.
+!>
+!> The deck is a file of Fortran namelist groups (doc/user-guide.md lists
+!> every key with its unit); raccord_deck fills this type and checks each
+!> value on its own; checks that need the mesh (set names, element types)
+!> are made when the model is built.
+!>
+!> Units are consistent and chosen by the user; the examples use mm, s, N,
+!> MPa and t/mm^3 (tonne per cubic millimetre), so that N = t mm / s^2.
+module raccord_scene
+  use raccord_kinds, only: wp, name_len, path_len
+  implicit none
+  private
+
+  integer, parameter, public :: MAX_TABLE = 256   !< most points of an amplitude table
+
+  !> &run: what the run is called and where results go.
+  type, public :: run_spec_t
+    character(len=:), allocatable :: title
+    character(len=:), allocatable :: output_dir     !< folder for results and log (resolved)
+  end type run_spec_t
+
+  !> &mesh: the mesh file.
+  type, public :: mesh_spec_t
+    character(len=:), allocatable :: file           !< path, resolved against the deck's folder
+    character(len=:), allocatable :: format         !< 'auto', 'gmsh' or 'abaqus'
+    real(wp) :: scale = 1.0_wp                      !< factor applied to coordinates on reading
+  end type mesh_spec_t
+
+  !> &body: one deformable body made of the elements of one element set.
+  type, public :: body_spec_t
+    character(len=:), allocatable :: name
+    character(len=:), allocatable :: elset          !< element set (Gmsh physical surface, Abaqus ELSET)
+    real(wp) :: young = 0.0_wp                      !< E [stress]
+    real(wp) :: poisson = 0.0_wp                    !< nu [-]
+    real(wp) :: density = 0.0_wp                    !< rho [mass/length^3]
+    logical :: plane_stress = .false.               !< hypothesis = 'plane_stress' (default plane strain)
+    real(wp) :: thickness = 1.0_wp                  !< out-of-plane thickness [length]
+    real(wp) :: velocity(2) = 0.0_wp                !< initial velocity [length/time]
+    real(wp) :: body_force(2) = 0.0_wp              !< force per unit volume [force/length^3]
+  end type body_spec_t
+
+  integer, parameter, public :: BC_FIXED = 1         !< listed components held at zero
+  integer, parameter, public :: BC_DISPLACEMENT = 2  !< listed components follow value*amplitude(t)
+  integer, parameter, public :: BC_TRACTION = 3      !< traction vector value*amplitude(t) on a surface
+  integer, parameter, public :: BC_PRESSURE = 4      !< pressure (positive pushes inward) on a surface
+
+  !> &boundary: one condition on a node set or surface.
+  type, public :: bc_spec_t
+    character(len=:), allocatable :: set            !< node set or surface name
+    integer :: kind = 0                             !< BC_* above
+    logical :: comp(2) = .false.                    !< components concerned (x, y) for fixed/displacement
+    real(wp) :: value(2) = 0.0_wp                   !< displacement [length] or traction [stress]
+    real(wp) :: pressure = 0.0_wp                   !< pressure [stress]
+    character(len=:), allocatable :: amplitude      !< amplitude name, '' for constant 1
+  end type bc_spec_t
+
+  !> &amplitude: a piecewise-linear time table, constant beyond its ends.
+  type, public :: amplitude_spec_t
+    character(len=:), allocatable :: name
+    integer :: npoint = 0
+    real(wp), allocatable :: t(:), a(:)
+  end type amplitude_spec_t
+
+  !> &time: duration, step and damping.
+  type, public :: time_spec_t
+    real(wp) :: t_end = 0.0_wp                      !< end time [time]
+    real(wp) :: dt = 0.0_wp                         !< fixed step [time]; 0 = safety*stable step
+    real(wp) :: safety = 0.9_wp                     !< fraction of the stable step used
+    real(wp) :: damping = 0.0_wp                    !< mass-proportional damping alpha [1/time]
+  end type time_spec_t
+
+  !> &output: what is written, and how often.
+  type, public :: output_spec_t
+    integer :: frames = 20                          !< number of result frames over the run (plus t=0)
+    integer :: history_every = 0                    !< steps between history lines; 0 = about 1000 lines
+    real(wp) :: progress_seconds = 10.0_wp          !< wall seconds between progress lines
+    logical :: stress = .true.                      !< write nodal stresses in frames
+  end type output_spec_t
+
+  integer, parameter, public :: METHOD_NTS = 1      !< node-to-segment matching
+  integer, parameter, public :: METHOD_MORTAR = 2   !< mortar (integral) matching
+  integer, parameter, public :: MULT_P1 = 1, MULT_P0 = 2, MULT_DUAL = 3
+
+  !> &contact_pair: one slave/master surface pair.
+  type, public :: contact_spec_t
+    character(len=:), allocatable :: slave, master  !< surface names
+    integer :: method = METHOD_NTS
+    integer :: multiplier = MULT_P1                 !< mortar multiplier space
+    real(wp) :: friction = 0.0_wp                   !< Coulomb coefficient mu; 0 = frictionless
+    real(wp) :: search_distance = 0.0_wp            !< 0 = automatic (from the surface element sizes)
+    real(wp) :: tolerance = 1.0e-10_wp              !< relative residual of the multiplier solve
+    integer :: max_iterations = 200                 !< cap on solver sweeps per step
+  end type contact_spec_t
+
+  !> The whole scene.
+  type, public :: scene_t
+    character(len=:), allocatable :: path           !< deck file
+    character(len=:), allocatable :: dir            !< deck's folder (relative paths resolve here)
+    type(run_spec_t) :: run
+    type(mesh_spec_t) :: mesh
+    type(body_spec_t), allocatable :: bodies(:)
+    type(bc_spec_t), allocatable :: bcs(:)
+    type(amplitude_spec_t), allocatable :: amplitudes(:)
+    type(time_spec_t) :: time
+    type(output_spec_t) :: output
+    type(contact_spec_t), allocatable :: contacts(:)
+  end type scene_t
+
+  public :: name_len, path_len
+end module raccord_scene
