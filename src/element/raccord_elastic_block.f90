@@ -1,0 +1,463 @@
+!> Small-strain Hooke elements, one material and one element type per block
+!> (doc/theory-elements.md; method.md section 2 for the lumped mass and the
+!> stable step).
+!>
+!> Hot-loop design (theory section 6): at every Gauss point g of element e
+!> the block keeps H = sqrt(w_g detJ h) J^-1 (2x2, 4 reals), so that with
+!> the natural derivatives D_a(g) = dN_a/d(xi, eta), the same for every element,
+!>   sqrt(c) grad u = (sum_a u_a D_a^T) H,   sqrt(c) sigma = C : sym(.)
+!>   f_a += (sqrt(c) sigma) H^T D_a          (c = w_g detJ h, theory eq. 6.1)
+!> which is f = K u with K = sum_g c B^T C B (eq. 3.2). Elements are processed
+!> in chunks of chunk_len: gather -> kernel vectorised across the chunk ->
+!> scatter, and H is stored chunk-major, h(chunk_len, 4, ngp, nchunk), so
+!> the kernel streams it with unit stride. The cold data c(ngp, nel) serve
+!> mass, body force and stress recovery.
+module raccord_elastic_block
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_strings, only: str
+  use raccord_mesh, only: ELEM_Q4, ELEM_Q8, nodes_per_element, element_name
+  use raccord_quadrature, only: gauss_legendre
+  use raccord_shape, only: shape_quad, node_natural_coords
+  implicit none
+  private
+
+  public :: init_elastic_block, add_internal_force, element_stiffness
+  public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
+
+  !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
+  integer, parameter :: chunk_len = 32
+  integer, parameter :: max_nen = 8, max_gp = 9
+
+  !> One material, one element type, many elements.
+  type, public :: elastic_block_t
+    integer :: etype = 0                 !< ELEM_Q4 or ELEM_Q8
+    integer :: nen = 0                   !< nodes per element
+    integer :: ngp = 0                   !< Gauss points per element (4 or 9)
+    integer :: nel = 0                   !< number of elements
+    integer, allocatable :: conn(:,:)    !< (nen, nel) global node indices
+    real(wp) :: young = 0.0_wp, poisson = 0.0_wp, thickness = 1.0_wp
+    logical :: plane_stress = .false.
+    real(wp), private :: lam = 0.0_wp    !< in-plane Lame lambda (plane stress: 2 lam mu/(lam + 2 mu))
+    real(wp), private :: mu = 0.0_wp     !< shear modulus
+    integer, private :: nchunk = 0
+    real(wp), allocatable, private :: wts(:)         !< (ngp) Gauss weights
+    real(wp), allocatable, private :: nref(:,:)      !< (nen, ngp) shape functions at the Gauss points
+    real(wp), allocatable, private :: dnref(:,:,:)   !< (2, nen, ngp) natural derivatives at the Gauss points
+    real(wp), allocatable, private :: extrap(:,:)    !< (nen, ngp) Gauss point -> node extrapolation
+    real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
+    real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
+  end type elastic_block_t
+
+  interface
+    subroutine dsyev(jobz, uplo, n, a, lda, w, work, lwork, info)
+      import :: wp
+      character, intent(in) :: jobz, uplo
+      integer, intent(in) :: n, lda, lwork
+      real(wp), intent(inout) :: a(lda, *)
+      real(wp), intent(out) :: w(*), work(*)
+      integer, intent(out) :: info
+    end subroutine dsyev
+  end interface
+
+contains
+
+  !> Set up a block: validate the input, tabulate the reference element and
+  !> precompute sqrt(c) J^-1 and c at every Gauss point. Full integration:
+  !> 2x2 Gauss for Q4, 3x3 for Q8 (theory section 2). Errors (EXIT_INPUT):
+  !> unknown element type, bad connectivity, bad material, and detJ <= 0 at a
+  !> Gauss point (the message names the element index).
+  subroutine init_elastic_block(blk, etype, conn, x, young, poisson, plane_stress, thickness, err)
+    type(elastic_block_t), intent(out) :: blk
+    integer, intent(in) :: etype
+    integer, intent(in) :: conn(:,:)
+    real(wp), intent(in) :: x(:,:)
+    real(wp), intent(in) :: young, poisson, thickness
+    logical, intent(in) :: plane_stress
+    type(error_t), intent(inout) :: err
+    character(len=*), parameter :: where = 'init_elastic_block: '
+    integer :: nen, n1, ngp, i, j, g, a, e, ic, il, stat
+    real(wp) :: gx(3), gw(3), jac(2, 2), detj, cg, sq, xe(2, max_nen), nat(2), lag(3, 2)
+    character(len=256) :: msg
+
+    nen = nodes_per_element(etype)
+    if (nen == 0) then
+      call raise_error(err, EXIT_INPUT, where // 'unknown element type ' // str(etype) // &
+        '; use ELEM_Q4 or ELEM_Q8')
+      return
+    end if
+    if (size(conn, 1) /= nen) then
+      call raise_error(err, EXIT_INPUT, where // 'connectivity has ' // str(size(conn, 1)) // &
+        ' rows, a ' // element_name(etype) // ' element needs ' // str(nen))
+      return
+    end if
+    if (size(x, 1) /= 2) then
+      call raise_error(err, EXIT_INPUT, where // 'coordinates must be x(2, nnode)')
+      return
+    end if
+    if (any(conn < 1) .or. any(conn > size(x, 2))) then
+      call raise_error(err, EXIT_INPUT, where // 'connectivity refers to a node outside 1..' // &
+        str(size(x, 2)) // '; check the mesh and the node numbering')
+      return
+    end if
+    if (.not. (young > 0.0_wp)) then
+      call raise_error(err, EXIT_INPUT, where // 'Young''s modulus must be > 0, got ' // str(young))
+      return
+    end if
+    if (.not. (poisson > -1.0_wp .and. poisson < 0.5_wp)) then
+      call raise_error(err, EXIT_INPUT, where // 'Poisson''s ratio must lie in (-1, 0.5), got ' // str(poisson))
+      return
+    end if
+    if (.not. (thickness > 0.0_wp)) then
+      call raise_error(err, EXIT_INPUT, where // 'thickness must be > 0, got ' // str(thickness))
+      return
+    end if
+
+    blk%etype = etype
+    blk%nen = nen
+    blk%nel = size(conn, 2)
+    blk%young = young
+    blk%poisson = poisson
+    blk%thickness = thickness
+    blk%plane_stress = plane_stress
+    ! Lame constants (theory eq. 3.1); plane stress condenses sigma_zz = 0
+    blk%mu = young/(2.0_wp*(1.0_wp + poisson))
+    blk%lam = young*poisson/((1.0_wp + poisson)*(1.0_wp - 2.0_wp*poisson))
+    if (plane_stress) blk%lam = 2.0_wp*blk%lam*blk%mu/(blk%lam + 2.0_wp*blk%mu)
+
+    n1 = 2
+    if (etype == ELEM_Q8) n1 = 3
+    ngp = n1*n1
+    blk%ngp = ngp
+    blk%nchunk = (blk%nel + chunk_len - 1)/chunk_len
+    call gauss_legendre(n1, gx(1:n1), gw(1:n1))
+
+    allocate(blk%conn(nen, blk%nel), blk%wts(ngp), blk%nref(nen, ngp), blk%dnref(2, nen, ngp), &
+      blk%extrap(nen, ngp), blk%h(chunk_len, 4, ngp, blk%nchunk), blk%c(ngp, blk%nel), &
+      stat=stat, errmsg=msg)
+    if (stat /= 0) then
+      call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
+        ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
+      return
+    end if
+    blk%conn = conn
+
+    ! tensor Gauss rule, g = i + n1 (j - 1): xi = gx(i), eta = gx(j)
+    do j = 1, n1
+      do i = 1, n1
+        g = i + n1*(j - 1)
+        blk%wts(g) = gw(i)*gw(j)
+        call shape_quad(etype, gx(i), gx(j), blk%nref(:, g), blk%dnref(:, :, g))
+      end do
+    end do
+
+    ! Extrapolation (theory eq. 7.1): the tensor Lagrange interpolant through
+    ! the n1 x n1 Gauss points, evaluated at each node; exact for stresses
+    ! that are polynomials of degree n1 - 1 in each natural coordinate.
+    do a = 1, nen
+      nat = node_natural_coords(a)
+      do i = 1, n1
+        lag(i, 1) = lagrange_1d(gx(1:n1), i, nat(1))
+        lag(i, 2) = lagrange_1d(gx(1:n1), i, nat(2))
+      end do
+      do j = 1, n1
+        do i = 1, n1
+          blk%extrap(a, i + n1*(j - 1)) = lag(i, 1)*lag(j, 2)
+        end do
+      end do
+    end do
+
+    blk%h = 0.0_wp
+    do e = 1, blk%nel
+      xe(:, 1:nen) = x(:, conn(:, e))
+      ic = (e - 1)/chunk_len + 1
+      il = e - (ic - 1)*chunk_len
+      do g = 1, ngp
+        ! J_ik = dx_i/dxi_k (theory eq. 1.4)
+        jac = matmul(xe(:, 1:nen), transpose(blk%dnref(:, :, g)))
+        detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+        if (.not. (detj > 0.0_wp)) then
+          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(etype) // &
+            ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
+            '; its nodes must be counter-clockwise and the element not degenerate')
+          return
+        end if
+        cg = blk%wts(g)*detj*thickness
+        blk%c(g, e) = cg
+        sq = sqrt(cg)/detj
+        ! H = sqrt(c) J^-1, stored column-major (H11, H21, H12, H22)
+        blk%h(il, 1, g, ic) = sq*jac(2, 2)
+        blk%h(il, 2, g, ic) = -sq*jac(2, 1)
+        blk%h(il, 3, g, ic) = -sq*jac(1, 2)
+        blk%h(il, 4, g, ic) = sq*jac(1, 1)
+      end do
+    end do
+  end subroutine init_elastic_block
+
+  !> 1D Lagrange basis polynomial i through the points p, at s.
+  pure real(wp) function lagrange_1d(p, i, s)
+    real(wp), intent(in) :: p(:), s
+    integer, intent(in) :: i
+    integer :: k
+    lagrange_1d = 1.0_wp
+    do k = 1, size(p)
+      if (k /= i) lagrange_1d = lagrange_1d*(s - p(k))/(p(i) - p(k))
+    end do
+  end function lagrange_1d
+
+  !> f(2, nnode) += K u over the block's elements (theory eq. 6.1).
+  !> Gather -> chunk kernel -> scatter; no allocation (chunk buffers are
+  !> fixed-size locals).
+  subroutine add_internal_force(blk, u, f)
+    type(elastic_block_t), intent(in) :: blk
+    real(wp), intent(in) :: u(:,:)
+    real(wp), intent(inout) :: f(:,:)
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen)
+    integer :: ic, e0, nc, i, a, node, nen
+    nen = blk%nen
+    chunks: do ic = 1, blk%nchunk
+      e0 = (ic - 1)*chunk_len
+      nc = min(chunk_len, blk%nel - e0)
+      do a = 1, nen
+        do i = 1, nc
+          node = blk%conn(a, e0 + i)
+          ue(i, 1, a) = u(1, node)
+          ue(i, 2, a) = u(2, node)
+        end do
+      end do
+      call chunk_kernel(nc, nen, blk%ngp, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), &
+        ue(:, :, 1:nen), fe(:, :, 1:nen))
+      do a = 1, nen
+        do i = 1, nc
+          node = blk%conn(a, e0 + i)
+          f(1, node) = f(1, node) + fe(i, 1, a)
+          f(2, node) = f(2, node) + fe(i, 2, a)
+        end do
+      end do
+    end do chunks
+  end subroutine add_internal_force
+
+  !> fe = K_e ue for nc elements of a chunk, vectorised across the chunk
+  !> (theory eq. 6.1). h holds sqrt(c) J^-1 at each Gauss point.
+  pure subroutine chunk_kernel(nc, nen, ngp, lam, mu, dn, h, ue, fe)
+    integer, intent(in) :: nc, nen, ngp
+    real(wp), intent(in) :: lam, mu, dn(2, nen, ngp), h(chunk_len, 4, ngp), ue(chunk_len, 2, nen)
+    real(wp), intent(out) :: fe(chunk_len, 2, nen)
+    real(wp) :: d(chunk_len, 4), t(chunk_len, 4)
+    real(wp) :: d1, d2, g11, g12, g21, g22, tr, s11, s22, s12, mu2
+    integer :: g, a, i
+    mu2 = 2.0_wp*mu
+    fe(1:nc, :, :) = 0.0_wp
+    gauss: do g = 1, ngp
+      ! natural gradient of u: d = sum_a u_a (dN_a/dxi, dN_a/deta)
+      d(1:nc, :) = 0.0_wp
+      do a = 1, nen
+        d1 = dn(1, a, g)
+        d2 = dn(2, a, g)
+        do i = 1, nc
+          d(i, 1) = d(i, 1) + ue(i, 1, a)*d1
+          d(i, 2) = d(i, 2) + ue(i, 1, a)*d2
+          d(i, 3) = d(i, 3) + ue(i, 2, a)*d1
+          d(i, 4) = d(i, 4) + ue(i, 2, a)*d2
+        end do
+      end do
+      do i = 1, nc
+        ! sqrt(c) grad u = d H
+        g11 = d(i, 1)*h(i, 1, g) + d(i, 2)*h(i, 2, g)
+        g12 = d(i, 1)*h(i, 3, g) + d(i, 2)*h(i, 4, g)
+        g21 = d(i, 3)*h(i, 1, g) + d(i, 4)*h(i, 2, g)
+        g22 = d(i, 3)*h(i, 3, g) + d(i, 4)*h(i, 4, g)
+        ! Hooke (theory eq. 3.1), scaled by sqrt(c)
+        tr = lam*(g11 + g22)
+        s11 = tr + mu2*g11
+        s22 = tr + mu2*g22
+        s12 = mu*(g12 + g21)
+        ! t = (sqrt(c) sigma) H^T
+        t(i, 1) = s11*h(i, 1, g) + s12*h(i, 3, g)
+        t(i, 2) = s11*h(i, 2, g) + s12*h(i, 4, g)
+        t(i, 3) = s12*h(i, 1, g) + s22*h(i, 3, g)
+        t(i, 4) = s12*h(i, 2, g) + s22*h(i, 4, g)
+      end do
+      do a = 1, nen
+        d1 = dn(1, a, g)
+        d2 = dn(2, a, g)
+        do i = 1, nc
+          fe(i, 1, a) = fe(i, 1, a) + t(i, 1)*d1 + t(i, 2)*d2
+          fe(i, 2, a) = fe(i, 2, a) + t(i, 3)*d1 + t(i, 4)*d2
+        end do
+      end do
+    end do gauss
+  end subroutine chunk_kernel
+
+  !> sqrt(c) dN_a/dx (row 1) and dN_a/dy (row 2) of element e at Gauss point g.
+  pure subroutine scaled_gradients(blk, e, g, gr)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e, g
+    real(wp), intent(out) :: gr(:,:)
+    real(wp) :: h11, h21, h12, h22
+    integer :: ic, il, a
+    ic = (e - 1)/chunk_len + 1
+    il = e - (ic - 1)*chunk_len
+    h11 = blk%h(il, 1, g, ic)
+    h21 = blk%h(il, 2, g, ic)
+    h12 = blk%h(il, 3, g, ic)
+    h22 = blk%h(il, 4, g, ic)
+    do a = 1, blk%nen
+      gr(1, a) = blk%dnref(1, a, g)*h11 + blk%dnref(2, a, g)*h21
+      gr(2, a) = blk%dnref(1, a, g)*h12 + blk%dnref(2, a, g)*h22
+    end do
+  end subroutine scaled_gradients
+
+  !> Element stiffness ke(2 nen, 2 nen) = sum_g c B^T C B (theory eq. 3.2),
+  !> dof order (x1, y1, x2, y2, ...).
+  pure subroutine element_stiffness(blk, e, ke)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e
+    real(wp), intent(out) :: ke(:,:)
+    real(wp) :: gr(2, max_nen), l2m
+    integer :: g, a, b, nen
+    nen = blk%nen
+    l2m = blk%lam + 2.0_wp*blk%mu
+    ke = 0.0_wp
+    do g = 1, blk%ngp
+      call scaled_gradients(blk, e, g, gr)
+      do b = 1, nen
+        do a = 1, nen
+          ke(2*a - 1, 2*b - 1) = ke(2*a - 1, 2*b - 1) + l2m*gr(1, a)*gr(1, b) + blk%mu*gr(2, a)*gr(2, b)
+          ke(2*a - 1, 2*b) = ke(2*a - 1, 2*b) + blk%lam*gr(1, a)*gr(2, b) + blk%mu*gr(2, a)*gr(1, b)
+          ke(2*a, 2*b - 1) = ke(2*a, 2*b - 1) + blk%lam*gr(2, a)*gr(1, b) + blk%mu*gr(1, a)*gr(2, b)
+          ke(2*a, 2*b) = ke(2*a, 2*b) + l2m*gr(2, a)*gr(2, b) + blk%mu*gr(1, a)*gr(1, b)
+        end do
+      end do
+    end do
+  end subroutine element_stiffness
+
+  !> Lumped masses of element e (theory eq. 4.1-4.2): row sum of the
+  !> consistent mass for Q4, HRZ diagonal scaling for Q8.
+  pure subroutine element_lumped_mass(blk, e, density, me)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e
+    real(wp), intent(in) :: density
+    real(wp), intent(out) :: me(:)
+    real(wp) :: total, dsum
+    integer :: g, nen
+    nen = blk%nen
+    me(1:nen) = 0.0_wp
+    total = 0.0_wp
+    do g = 1, blk%ngp
+      total = total + density*blk%c(g, e)
+      if (blk%etype == ELEM_Q8) then
+        me(1:nen) = me(1:nen) + density*blk%c(g, e)*blk%nref(:, g)**2
+      else
+        me(1:nen) = me(1:nen) + density*blk%c(g, e)*blk%nref(:, g)
+      end if
+    end do
+    if (blk%etype == ELEM_Q8) then
+      dsum = sum(me(1:nen))
+      me(1:nen) = me(1:nen)*(total/dsum)
+    end if
+  end subroutine element_lumped_mass
+
+  !> m(nnode) += lumped nodal masses (thickness included).
+  pure subroutine add_lumped_mass(blk, density, m)
+    type(elastic_block_t), intent(in) :: blk
+    real(wp), intent(in) :: density
+    real(wp), intent(inout) :: m(:)
+    real(wp) :: me(max_nen)
+    integer :: e
+    do e = 1, blk%nel
+      call element_lumped_mass(blk, e, density, me)
+      m(blk%conn(:, e)) = m(blk%conn(:, e)) + me(1:blk%nen)
+    end do
+  end subroutine add_lumped_mass
+
+  !> f(2, nnode) += consistent nodal forces int N_a b dV of a constant force
+  !> per unit volume b(2) (theory eq. 5.2).
+  pure subroutine add_body_force(blk, b, f)
+    type(elastic_block_t), intent(in) :: blk
+    real(wp), intent(in) :: b(2)
+    real(wp), intent(inout) :: f(:,:)
+    integer :: e, g, a, node
+    do e = 1, blk%nel
+      do g = 1, blk%ngp
+        do a = 1, blk%nen
+          node = blk%conn(a, e)
+          f(:, node) = f(:, node) + blk%nref(a, g)*blk%c(g, e)*b
+        end do
+      end do
+    end do
+  end subroutine add_body_force
+
+  !> Upper bound of omega_max^2 of the assembled lumped system: the largest
+  !> element eigenvalue lambda_max(Ke, Me) (theory eq. 4.3), from LAPACK
+  !> dsyev on Me^-1/2 Ke Me^-1/2. Stable step: dt <= 2/sqrt(w2).
+  !> Should dsyev fail, the element's Gershgorin bound (also an upper bound)
+  !> is used instead.
+  function max_eigenvalue_bound(blk, density) result(w2)
+    type(elastic_block_t), intent(in) :: blk
+    real(wp), intent(in) :: density
+    real(wp) :: w2
+    integer, parameter :: nmax = 2*max_nen, lwork = 8*nmax
+    real(wp) :: ke(nmax, nmax), me(max_nen), s(nmax), ev(nmax), work(lwork)
+    integer :: e, n, i, j, info
+    w2 = 0.0_wp
+    n = 2*blk%nen
+    do e = 1, blk%nel
+      call element_stiffness(blk, e, ke(1:n, 1:n))
+      call element_lumped_mass(blk, e, density, me)
+      do i = 1, blk%nen
+        s(2*i - 1:2*i) = 1.0_wp/sqrt(me(i))
+      end do
+      do j = 1, n
+        do i = 1, n
+          ke(i, j) = s(i)*ke(i, j)*s(j)
+        end do
+      end do
+      call dsyev('N', 'U', n, ke, nmax, ev, work, lwork, info)
+      if (info == 0) then
+        w2 = max(w2, ev(n))
+      else
+        ! dsyev destroyed the matrix: rebuild it for the Gershgorin bound
+        call element_stiffness(blk, e, ke(1:n, 1:n))
+        do i = 1, n
+          w2 = max(w2, sum(abs(ke(i, 1:n))*s(1:n))*s(i))
+        end do
+      end if
+    end do
+  end function max_eigenvalue_bound
+
+  !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
+  !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
+  !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
+  !> plane strain, 0 in plane stress.
+  pure subroutine add_nodal_stress(blk, u, s, wsum)
+    type(elastic_block_t), intent(in) :: blk
+    real(wp), intent(in) :: u(:,:)
+    real(wp), intent(inout) :: s(:,:), wsum(:)
+    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs
+    integer :: e, g, a, nen
+    nen = blk%nen
+    do e = 1, blk%nel
+      ue(:, 1:nen) = u(:, blk%conn(:, e))
+      do g = 1, blk%ngp
+        call scaled_gradients(blk, e, g, gr)
+        rs = 1.0_wp/sqrt(blk%c(g, e))
+        ! grad u_ij = du_i/dx_j (theory eq. 3.1)
+        gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
+        tr = blk%lam*(gu(1, 1) + gu(2, 2))
+        sg(1, g) = tr + 2.0_wp*blk%mu*gu(1, 1)
+        sg(2, g) = tr + 2.0_wp*blk%mu*gu(2, 2)
+        sg(3, g) = blk%mu*(gu(1, 2) + gu(2, 1))
+        if (blk%plane_stress) then
+          sg(4, g) = 0.0_wp
+        else
+          sg(4, g) = blk%poisson*(sg(1, g) + sg(2, g))
+        end if
+      end do
+      do a = 1, nen
+        s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
+        wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
+      end do
+    end do
+  end subroutine add_nodal_stress
+end module raccord_elastic_block
