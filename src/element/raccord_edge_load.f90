@@ -18,21 +18,21 @@ contains
   !>   f_a = h int N_a (t |x'(s)| - p n(s) |x'(s)|) ds,  n |x'| = (y', -x').
   !> The pressure integrand is a polynomial (degree 1 + 2 for a 3-node edge),
   !> integrated exactly by 2 Gauss points. The traction integrand holds
-  !> |x'(s)|, a polynomial only on straight edges; a curved 3-node edge uses
-  !> 5 points (exact to degree 9), whose error on |x'| is far below the
-  !> discretisation error for any reasonable edge curvature.
+  !> |x'(s)|, a polynomial only on straight edges; a 3-node edge uses 10
+  !> points (exact to degree 19): relative error 3e-8 on an edge whose mid
+  !> node sits 0.23 chord lengths off the chord, round-off on mild curvature.
   pure subroutine add_edge_traction(nen_edge, xe, traction, pressure, thickness, fe)
     integer, intent(in) :: nen_edge
     real(wp), intent(in) :: xe(2, 3), traction(2), pressure, thickness
     real(wp), intent(out) :: fe(2, 3)
-    integer, parameter :: max_gp = 5
+    integer, parameter :: max_gp = 10
     real(wp) :: sg(max_gp), wg(max_gp), n(3), dn(3), tang(2), nrm(2), jac
     integer :: ngp, g, a, nen
     fe = 0.0_wp
     nen = min(max(nen_edge, 2), 3)
     if (nen_edge /= nen) return
     ngp = 2
-    if (nen == 3) ngp = 5
+    if (nen == 3) ngp = max_gp
     call gauss_legendre(ngp, sg(1:ngp), wg(1:ngp))
     do g = 1, ngp
       call shape_line(nen, sg(g), n, dn)
