@@ -1,0 +1,172 @@
+!> Small file-system helpers (rename, mkdir -p, exists, delete).
+!>
+!> Fortran 2008 has no rename or mkdir, so these call the POSIX C library
+!> through ISO_C_BINDING interfaces; no C shim is needed. The one
+!> non-standard symbol is glibc's/musl's `__errno_location`, the function
+!> behind the C `errno` macro: it gives the reason for a failure, which a
+!> message needs to say how to fix it.
+module raccord_files
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_char, c_associated, &
+    c_f_pointer
+  use raccord_error, only: error_t, raise_error, EXIT_IO
+  implicit none
+  private
+
+  public :: rename_file, make_directory, file_exists, delete_file
+
+  !> access(2) mode "does the file exist".
+  integer(c_int), parameter :: F_OK = 0_c_int
+  !> Permissions for new directories; the process umask still applies,
+  !> as for `mkdir -p`.
+  integer(c_int), parameter :: DIR_MODE = int(o'777', c_int)
+  !> Longest C error text copied from strerror.
+  integer, parameter :: MAX_ERRTEXT = 256
+
+  interface
+    function c_rename(from, to) bind(C, name='rename') result(rc)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: from(*), to(*)
+      integer(c_int) :: rc
+    end function c_rename
+
+    function c_mkdir(path, mode) bind(C, name='mkdir') result(rc)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int), value :: mode    ! mode_t is a 32-bit unsigned int on Linux
+      integer(c_int) :: rc
+    end function c_mkdir
+
+    function c_access(path, mode) bind(C, name='access') result(rc)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int), value :: mode
+      integer(c_int) :: rc
+    end function c_access
+
+    function c_unlink(path) bind(C, name='unlink') result(rc)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: rc
+    end function c_unlink
+
+    function c_strerror(errnum) bind(C, name='strerror') result(text)
+      import :: c_int, c_ptr
+      integer(c_int), value :: errnum
+      type(c_ptr) :: text
+    end function c_strerror
+
+    function c_errno_location() bind(C, name='__errno_location') result(p)
+      import :: c_ptr
+      type(c_ptr) :: p
+    end function c_errno_location
+  end interface
+
+contains
+
+  !> Rename (move) a file, replacing `to` if it exists (POSIX rename:
+  !> atomic on one file system, which is why results are written under a
+  !> temporary name and renamed when complete).
+  subroutine rename_file(from, to, err)
+    character(len=*), intent(in) :: from, to
+    type(error_t), intent(inout) :: err
+    if (c_rename(c_path(from), c_path(to)) /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot rename "' // trim(from) // '" to "' // trim(to) &
+        // '": ' // last_error_text() // '; check that both paths are on a writable file system')
+    end if
+  end subroutine rename_file
+
+  !> Create a directory and its missing parents (`mkdir -p`); an existing
+  !> directory is fine. An empty path means the current directory.
+  subroutine make_directory(path, err)
+    character(len=*), intent(in) :: path
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: p
+    integer :: k
+    p = trim(path)
+    if (len(p) == 0) return
+    ! Create each prefix that ends before a '/', then the whole path.
+    do k = 2, len(p)
+      if (p(k:k) == '/' .and. p(k-1:k-1) /= '/') then
+        call make_one(p(1:k-1), err)
+        if (err%failed()) return
+      end if
+    end do
+    call make_one(p, err)
+  end subroutine make_directory
+
+  !> True when something exists at the path (file, directory or other).
+  logical function file_exists(path)
+    character(len=*), intent(in) :: path
+    file_exists = c_access(c_path(path), F_OK) == 0
+  end function file_exists
+
+  !> Delete a file; nothing happens (and no error) if it does not exist,
+  !> because callers use it to clear stale outputs.
+  subroutine delete_file(path)
+    character(len=*), intent(in) :: path
+    integer(c_int) :: rc
+    rc = c_unlink(c_path(path))
+  end subroutine delete_file
+
+  ! --- private -----------------------------------------------------------
+
+  !> One level of make_directory.
+  subroutine make_one(dir, err)
+    character(len=*), intent(in) :: dir
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: reason
+    if (is_directory(dir)) return
+    if (c_mkdir(c_path(dir), DIR_MODE) == 0) return
+    reason = last_error_text()
+    ! Another process may have created it between the test and mkdir.
+    if (is_directory(dir)) return
+    call raise_error(err, EXIT_IO, 'cannot create directory "' // dir // '": ' // reason &
+      // '; check that the parent exists, is a directory and is writable')
+  end subroutine make_one
+
+  !> A path is a directory when "path/." exists (ENOTDIR otherwise), which
+  !> avoids the platform-specific layout of struct stat.
+  logical function is_directory(path)
+    character(len=*), intent(in) :: path
+    is_directory = c_access(c_path(path // '/.'), F_OK) == 0
+  end function is_directory
+
+  !> Null-terminated copy of a Fortran path, trailing blanks removed.
+  pure function c_path(path) result(s)
+    character(len=*), intent(in) :: path
+    character(kind=c_char, len=:), allocatable :: s
+    s = trim(path) // c_null_char
+  end function c_path
+
+  !> strerror(errno) as a Fortran string, read right after the failed call.
+  function last_error_text() result(text)
+    character(len=:), allocatable :: text
+    integer(c_int), pointer :: errno
+    character(kind=c_char), pointer :: chars(:)
+    type(c_ptr) :: p
+    integer :: n, code
+    character(len=16) :: buf
+    code = 0
+    p = c_errno_location()
+    if (c_associated(p)) then
+      call c_f_pointer(p, errno)
+      code = errno
+    end if
+    write(buf, '(i0)') code
+    text = 'error ' // trim(buf)
+    p = c_strerror(int(code, c_int))
+    if (.not. c_associated(p)) return
+    call c_f_pointer(p, chars, [MAX_ERRTEXT])
+    n = 0
+    do while (n < MAX_ERRTEXT)
+      if (chars(n + 1) == c_null_char) exit
+      n = n + 1
+    end do
+    if (n == 0) return
+    allocate(character(len=n) :: text)
+    do while (n > 0)
+      text(n:n) = chars(n)
+      n = n - 1
+    end do
+  end function last_error_text
+end module raccord_files
