@@ -87,11 +87,11 @@ contains
     ! Create each prefix that ends before a '/', then the whole path.
     do k = 2, len(p)
       if (p(k:k) == '/' .and. p(k-1:k-1) /= '/') then
-        call make_one(p(1:k-1), err)
+        call make_one(p(1:k-1), p, err)
         if (err%failed()) return
       end if
     end do
-    call make_one(p, err)
+    call make_one(p, p, err)
   end subroutine make_directory
 
   !> True when something exists at the path (file, directory or other).
@@ -110,9 +110,9 @@ contains
 
   ! --- private -----------------------------------------------------------
 
-  !> One level of make_directory.
-  subroutine make_one(dir, err)
-    character(len=*), intent(in) :: dir
+  !> One level of make_directory: create `dir`, a prefix of `target`.
+  subroutine make_one(dir, target, err)
+    character(len=*), intent(in) :: dir, target
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: reason
     if (is_directory(dir)) return
@@ -120,8 +120,14 @@ contains
     reason = last_error_text()
     ! Another process may have created it between the test and mkdir.
     if (is_directory(dir)) return
-    call raise_error(err, EXIT_IO, 'cannot create directory "' // dir // '": ' // reason &
-      // '; check that the parent exists, is a directory and is writable')
+    if (file_exists(dir)) reason = 'it exists and is not a directory'
+    if (dir == target) then
+      call raise_error(err, EXIT_IO, 'cannot create directory "' // target // '": ' // reason &
+        // '; check the path and that its parent is a writable directory')
+    else
+      call raise_error(err, EXIT_IO, 'cannot create directory "' // target // '": "' // dir &
+        // '": ' // reason // '; check the path and that its parent is a writable directory')
+    end if
   end subroutine make_one
 
   !> A path is a directory when "path/." exists (ENOTDIR otherwise), which
@@ -163,6 +169,7 @@ contains
       n = n + 1
     end do
     if (n == 0) return
+    deallocate(text)
     allocate(character(len=n) :: text)
     do while (n > 0)
       text(n:n) = chars(n)
