@@ -1,0 +1,91 @@
+!> The discrete model a run integrates: bodies (blocks of elastic elements),
+!> lumped masses, supports (fixed or driven displacement components),
+!> surface loads, body forces, initial velocities and damping.
+!>
+!> Built once from the scene and the mesh by build_model
+!> (raccord_model_build); read-only in the time loop.
+module raccord_model
+  use raccord_kinds, only: wp
+  use raccord_elastic_block, only: elastic_block_t
+  use raccord_amplitude, only: interpolate_table
+  implicit none
+  private
+
+  public :: amplitude_at
+
+  !> One deformable body: the elements of one element set, one material;
+  !> one elastic block per element type present (Q4 and/or Q8).
+  type, public :: body_t
+    character(len=:), allocatable :: name
+    integer, allocatable :: elems(:)                   !< mesh element indices
+    type(elastic_block_t), allocatable :: blocks(:)
+    real(wp) :: density = 0.0_wp
+    real(wp) :: mass = 0.0_wp                          !< total mass (with thickness)
+    real(wp) :: w2_bound = 0.0_wp                      !< element bound on omega_max^2
+  end type body_t
+
+  !> A support: components of a node set held at value*amplitude(t)
+  !> (value 0 for a fixed condition). Its constrained degrees of freedom
+  !> are listed in model%cdof_* with this support's index.
+  type, public :: support_t
+    character(len=:), allocatable :: set
+    logical :: driven = .false.                        !< displacement condition (not fixed)
+    real(wp) :: value(2) = 0.0_wp
+    integer :: amplitude = 0                           !< index in model%amplitudes, 0 = constant 1
+    integer, allocatable :: nodes(:)                   !< nodes of the set (for mean displacement output)
+  end type support_t
+
+  !> A surface load: consistent nodal forces at unit amplitude.
+  type, public :: surface_load_t
+    character(len=:), allocatable :: set
+    integer :: amplitude = 0
+    integer, allocatable :: nodes(:)
+    real(wp), allocatable :: force(:,:)                !< (2, size(nodes)) at amplitude 1
+  end type surface_load_t
+
+  !> A time table (copied from the scene).
+  type, public :: amplitude_t
+    character(len=:), allocatable :: name
+    real(wp), allocatable :: t(:), a(:)
+  end type amplitude_t
+
+  !> The whole model.
+  type, public :: model_t
+    integer :: nnode = 0
+    integer :: nelem = 0                               !< elements in bodies
+    real(wp), allocatable :: x(:,:)                    !< (2, nnode) reference coordinates
+    real(wp), allocatable :: mass(:)                   !< lumped nodal mass
+    real(wp), allocatable :: minv(:)                   !< 1/mass, 0 on nodes in no body
+    integer, allocatable :: node_body(:)               !< body of each node (0: none)
+    type(body_t), allocatable :: bodies(:)
+    type(amplitude_t), allocatable :: amplitudes(:)
+    type(support_t), allocatable :: supports(:)
+    ! Constrained degrees of freedom, one entry each: node, component, support.
+    integer :: ncdof = 0
+    integer, allocatable :: cdof_node(:), cdof_comp(:), cdof_support(:)
+    type(surface_load_t), allocatable :: loads(:)
+    real(wp), allocatable :: f_body(:,:)               !< (2, nnode) body-force nodal forces
+    real(wp), allocatable :: v0(:,:)                   !< (2, nnode) initial velocity
+    real(wp) :: damping = 0.0_wp                       !< mass-proportional alpha [1/time]
+    real(wp) :: w2_bound = 0.0_wp                      !< max over bodies of the element bound
+    ! Active effects: the step loop does only what is switched on here.
+    logical :: has_body_force = .false.
+    logical :: has_loads = .false.
+    logical :: has_damping = .false.
+    logical :: has_supports = .false.
+  end type model_t
+
+contains
+
+  !> Value at time t of the model's amplitude idx (0: the constant 1).
+  pure real(wp) function amplitude_at(model, idx, t) result(a)
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: idx
+    real(wp), intent(in) :: t
+    if (idx == 0) then
+      a = 1.0_wp
+    else
+      a = interpolate_table(model%amplitudes(idx)%t, model%amplitudes(idx)%a, t)
+    end if
+  end function amplitude_at
+end module raccord_model

@@ -1,0 +1,405 @@
+!> Build the discrete model from the scene and the mesh, checking everything
+!> that needs both (set names, element types, conflicting conditions).
+module raccord_model_build
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, prefix_error, EXIT_INPUT
+  use raccord_log, only: log_info, log_warn
+  use raccord_strings, only: str
+  use raccord_mesh, only: mesh_t, nodes_per_element, element_name, find_node_set, find_elem_set, &
+    find_surface, ELEM_Q4, ELEM_Q8
+  use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
+  use raccord_elastic_block, only: init_elastic_block, add_lumped_mass, add_body_force, max_eigenvalue_bound
+  use raccord_edge_load, only: add_edge_traction
+  use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t
+  implicit none
+  private
+
+  public :: build_model, set_names, surface_nodes
+
+contains
+
+  !> Build `model` from `scene` and `mesh`; every failure names the scene
+  !> group and the set or element concerned.
+  subroutine build_model(scene, mesh, model, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(out) :: model
+    type(error_t), intent(inout) :: err
+    integer, allocatable :: elem_body(:)
+
+    model%nnode = mesh%nnode
+    model%x = mesh%x
+    call copy_amplitudes(scene, model)
+    call build_bodies(scene, mesh, model, elem_body, err)
+    if (err%failed()) return
+    call build_boundaries(scene, mesh, model, elem_body, err)
+    if (err%failed()) return
+    model%damping = scene%time%damping
+    model%has_damping = model%damping > 0.0_wp
+  end subroutine build_model
+
+  subroutine copy_amplitudes(scene, model)
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(inout) :: model
+    integer :: k, n
+    if (.not. allocated(scene%amplitudes)) then
+      allocate(model%amplitudes(0))
+      return
+    end if
+    allocate(model%amplitudes(size(scene%amplitudes)))
+    do k = 1, size(scene%amplitudes)
+      n = scene%amplitudes(k)%npoint
+      model%amplitudes(k)%name = scene%amplitudes(k)%name
+      model%amplitudes(k)%t = scene%amplitudes(k)%t(1:n)
+      model%amplitudes(k)%a = scene%amplitudes(k)%a(1:n)
+    end do
+  end subroutine copy_amplitudes
+
+  !> Bodies: elastic blocks per element type, lumped masses, stable-step
+  !> bound, initial velocities and body forces.
+  subroutine build_bodies(scene, mesh, model, elem_body, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(inout) :: model
+    integer, allocatable, intent(out) :: elem_body(:)
+    type(error_t), intent(inout) :: err
+    integer :: ib, ks, e, k, nb, nen, nblk, et, i, nfree
+    integer, allocatable :: elems(:), conn(:,:)
+    integer :: types(2)
+    real(wp) :: m_before
+    character(len=:), allocatable :: where
+
+    nb = size(scene%bodies)
+    allocate(model%bodies(nb))
+    allocate(elem_body(mesh%nelem), source=0)
+    allocate(model%mass(mesh%nnode), source=0.0_wp)
+    allocate(model%node_body(mesh%nnode), source=0)
+    allocate(model%v0(2, mesh%nnode), source=0.0_wp)
+    allocate(model%f_body(2, mesh%nnode), source=0.0_wp)
+    types = [ELEM_Q4, ELEM_Q8]
+
+    do ib = 1, nb
+      associate (spec => scene%bodies(ib), body => model%bodies(ib))
+        where = 'scene ' // scene%path // ': &body ''' // trim(spec%name) // ''''
+        ks = find_elem_set(mesh, spec%elset)
+        if (ks == 0) then
+          call raise_error(err, EXIT_INPUT, where // ': element set ''' // trim(spec%elset) // &
+            ''' not found in mesh ' // mesh%source // '; element sets there: ' // set_names(mesh, 'elem') // &
+            '. Set elset to one of them (Gmsh: a physical surface; Abaqus: *ELSET or ELSET= on *ELEMENT).')
+          return
+        end if
+        elems = mesh%esets(ks)%elems
+        if (size(elems) == 0) then
+          call raise_error(err, EXIT_INPUT, where // ': element set ''' // trim(spec%elset) // ''' is empty.')
+          return
+        end if
+        do k = 1, size(elems)
+          e = elems(k)
+          if (elem_body(e) /= 0) then
+            call raise_error(err, EXIT_INPUT, where // ': element ' // str(mesh%elem_id(e)) // &
+              ' already belongs to body ''' // model%bodies(elem_body(e))%name // &
+              '''; each element belongs to one body.')
+            return
+          end if
+          elem_body(e) = ib
+        end do
+        body%name = trim(spec%name)
+        body%elems = elems
+        body%density = spec%density
+
+        ! One elastic block per element type present in the set.
+        nblk = count([(any(mesh%etype(elems) == types(i)), i = 1, 2)])
+        allocate(body%blocks(nblk))
+        nblk = 0
+        do i = 1, 2
+          et = types(i)
+          if (.not. any(mesh%etype(elems) == et)) cycle
+          nblk = nblk + 1
+          nen = nodes_per_element(et)
+          conn = mesh%conn(1:nen, pack(elems, mesh%etype(elems) == et))
+          call init_elastic_block(body%blocks(nblk), et, conn, mesh%x, spec%young, spec%poisson, &
+            spec%plane_stress, spec%thickness, err)
+          if (err%failed()) then
+            call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
+            return
+          end if
+          m_before = sum(model%mass)
+          call add_lumped_mass(body%blocks(nblk), spec%density, model%mass)
+          body%mass = body%mass + (sum(model%mass) - m_before)
+          body%w2_bound = max(body%w2_bound, max_eigenvalue_bound(body%blocks(nblk), spec%density))
+          if (any(spec%body_force /= 0.0_wp)) then
+            call add_body_force(body%blocks(nblk), spec%body_force, model%f_body)
+            model%has_body_force = .true.
+          end if
+          do k = 1, size(conn, 2)
+            model%node_body(conn(:, k)) = ib
+            model%v0(1, conn(:, k)) = spec%velocity(1)
+            model%v0(2, conn(:, k)) = spec%velocity(2)
+          end do
+        end do
+        model%nelem = model%nelem + size(elems)
+        model%w2_bound = max(model%w2_bound, body%w2_bound)
+      end associate
+    end do
+
+    nfree = count(elem_body == 0)
+    if (nfree > 0) call log_warn('build_model', str(nfree) // ' mesh elements belong to no &body and are ignored')
+    allocate(model%minv(mesh%nnode), source=0.0_wp)
+    where (model%mass > 0.0_wp) model%minv = 1.0_wp/model%mass
+  end subroutine build_bodies
+
+  !> Supports and surface loads from the &boundary groups.
+  subroutine build_boundaries(scene, mesh, model, elem_body, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(inout) :: model
+    integer, intent(in) :: elem_body(:)
+    type(error_t), intent(inout) :: err
+    integer :: k, nbc, nsup, nload
+    integer, allocatable :: owner(:,:)
+    integer, allocatable :: cnode(:), ccomp(:), csup(:)
+
+    nbc = 0
+    if (allocated(scene%bcs)) nbc = size(scene%bcs)
+    nsup = count([(scene%bcs(k)%kind == BC_FIXED .or. scene%bcs(k)%kind == BC_DISPLACEMENT, k = 1, nbc)])
+    nload = nbc - nsup
+    allocate(model%supports(nsup), model%loads(nload))
+    allocate(owner(2, mesh%nnode), source=0)
+    allocate(cnode(0), ccomp(0), csup(0))
+    nsup = 0
+    nload = 0
+    do k = 1, nbc
+      select case (scene%bcs(k)%kind)
+      case (BC_FIXED, BC_DISPLACEMENT)
+        nsup = nsup + 1
+        call build_support(scene, scene%bcs(k), k, mesh, model, nsup, owner, cnode, ccomp, csup, err)
+      case (BC_TRACTION, BC_PRESSURE)
+        nload = nload + 1
+        call build_load(scene, scene%bcs(k), k, mesh, model, elem_body, model%loads(nload), err)
+      end select
+      if (err%failed()) return
+    end do
+    model%ncdof = size(cnode)
+    ! A constrained component starts from the support's motion, not from the
+    ! body's initial velocity (else energy would vanish at the first step).
+    do k = 1, model%ncdof
+      model%v0(ccomp(k), cnode(k)) = 0.0_wp
+    end do
+    model%cdof_node = cnode
+    model%cdof_comp = ccomp
+    model%cdof_support = csup
+    model%has_supports = model%ncdof > 0
+    model%has_loads = nload > 0
+  end subroutine build_boundaries
+
+  subroutine build_support(scene, bc, ibc, mesh, model, isup, owner, cnode, ccomp, csup, err)
+    type(scene_t), intent(in) :: scene
+    type(bc_spec_t), intent(in) :: bc
+    integer, intent(in) :: ibc, isup
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(inout) :: model
+    integer, intent(inout) :: owner(:,:)
+    integer, allocatable, intent(inout) :: cnode(:), ccomp(:), csup(:)
+    type(error_t), intent(inout) :: err
+    integer, allocatable :: nodes(:)
+    integer :: i, c, n, other, nskip
+    character(len=:), allocatable :: where
+
+    where = 'scene ' // scene%path // ': &boundary #' // str(ibc) // ' (set ''' // trim(bc%set) // ''')'
+    call resolve_node_set(mesh, bc%set, nodes, where, err)
+    if (err%failed()) return
+    associate (sup => model%supports(isup))
+      sup%set = trim(bc%set)
+      sup%driven = bc%kind == BC_DISPLACEMENT
+      sup%value = 0.0_wp
+      if (sup%driven) sup%value = bc%value
+      call resolve_amplitude(model, bc%amplitude, sup%amplitude)
+      nskip = count(model%node_body(nodes) == 0)
+      if (nskip > 0) call log_warn('build_model', where // ': ' // str(nskip) // &
+        ' nodes belong to no body and are skipped')
+      sup%nodes = pack(nodes, model%node_body(nodes) /= 0)
+      do i = 1, size(sup%nodes)
+        n = sup%nodes(i)
+        do c = 1, 2
+          if (.not. bc%comp(c)) cycle
+          other = owner(c, n)
+          if (other /= 0) then
+            ! Two fixed conditions on one component agree; anything else is ambiguous.
+            if (.not. sup%driven .and. .not. model%supports(other)%driven) cycle
+            call raise_error(err, EXIT_INPUT, where // ': node ' // str(mesh%node_id(n)) // ' component ' // &
+              trim(merge('x', 'y', c == 1)) // ' is already constrained by the condition on set ''' // &
+              model%supports(other)%set // '''; constrain each component of a node once ' // &
+              '(remove the node from one set or drop the component from one condition).')
+            return
+          end if
+          owner(c, n) = isup
+          cnode = [cnode, n]
+          ccomp = [ccomp, c]
+          csup = [csup, isup]
+        end do
+      end do
+    end associate
+  end subroutine build_support
+
+  subroutine build_load(scene, bc, ibc, mesh, model, elem_body, load, err)
+    type(scene_t), intent(in) :: scene
+    type(bc_spec_t), intent(in) :: bc
+    integer, intent(in) :: ibc
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: elem_body(:)
+    type(surface_load_t), intent(out) :: load
+    type(error_t), intent(inout) :: err
+    integer :: is, k, e, nen, ib, j
+    real(wp) :: xe(2, 3), fe(2, 3), traction(2), pressure
+    real(wp), allocatable :: f(:,:)
+    logical, allocatable :: touched(:)
+    character(len=:), allocatable :: where
+
+    where = 'scene ' // scene%path // ': &boundary #' // str(ibc) // ' (set ''' // trim(bc%set) // ''')'
+    is = find_surface(mesh, bc%set)
+    if (is == 0) then
+      if (find_node_set(mesh, bc%set) /= 0) then
+        call raise_error(err, EXIT_INPUT, where // ': ''' // trim(bc%set) // ''' is a node set, but a ' // &
+          'traction or pressure needs a surface (Gmsh: physical curve; Abaqus: *SURFACE). Surfaces in ' // &
+          mesh%source // ': ' // set_names(mesh, 'surface'))
+      else
+        call raise_error(err, EXIT_INPUT, where // ': surface ''' // trim(bc%set) // ''' not found in mesh ' // &
+          mesh%source // '; surfaces there: ' // set_names(mesh, 'surface'))
+      end if
+      return
+    end if
+    traction = 0.0_wp
+    pressure = 0.0_wp
+    if (bc%kind == BC_TRACTION) traction = bc%value
+    if (bc%kind == BC_PRESSURE) pressure = bc%pressure
+    allocate(f(2, mesh%nnode), source=0.0_wp)
+    allocate(touched(mesh%nnode), source=.false.)
+    associate (surf => mesh%surfaces(is))
+      nen = surf%nen_edge
+      do k = 1, surf%nedge
+        e = surf%elem(k)
+        if (e <= 0) then
+          call raise_error(err, EXIT_INPUT, where // ': edge ' // str(k) // ' (nodes ' // &
+            str(mesh%node_id(surf%edge(1, k))) // ', ' // str(mesh%node_id(surf%edge(2, k))) // &
+            ') lies inside the mesh (shared by two elements); a load surface must be on a body''s boundary.')
+          return
+        end if
+        ib = elem_body(e)
+        if (ib == 0) then
+          call raise_error(err, EXIT_INPUT, where // ': edge ' // str(k) // ' belongs to element ' // &
+            str(mesh%elem_id(e)) // ', which is in no &body.')
+          return
+        end if
+        xe = 0.0_wp
+        do j = 1, nen
+          xe(:, j) = mesh%x(:, surf%edge(j, k))
+        end do
+        fe = 0.0_wp
+        call add_edge_traction(nen, xe, traction, pressure, scene%bodies(ib)%thickness, fe)
+        do j = 1, nen
+          f(:, surf%edge(j, k)) = f(:, surf%edge(j, k)) + fe(:, j)
+          touched(surf%edge(j, k)) = .true.
+        end do
+      end do
+    end associate
+    load%set = trim(bc%set)
+    call resolve_amplitude(model, bc%amplitude, load%amplitude)
+    load%nodes = pack([(j, j = 1, mesh%nnode)], touched)
+    load%force = f(:, load%nodes)
+  end subroutine build_load
+
+  !> Nodes of a node set, or of a surface of that name.
+  subroutine resolve_node_set(mesh, name, nodes, where, err)
+    type(mesh_t), intent(in) :: mesh
+    character(len=*), intent(in) :: name, where
+    integer, allocatable, intent(out) :: nodes(:)
+    type(error_t), intent(inout) :: err
+    integer :: k
+    k = find_node_set(mesh, name)
+    if (k /= 0) then
+      nodes = mesh%nsets(k)%nodes
+    else
+      k = find_surface(mesh, name)
+      if (k == 0) then
+        call raise_error(err, EXIT_INPUT, where // ': no node set or surface named ''' // trim(name) // &
+          ''' in mesh ' // mesh%source // '; node sets there: ' // set_names(mesh, 'node') // &
+          '. Fix the set name, or add the set to the mesh (Gmsh: physical curve or point; Abaqus: *NSET).')
+        return
+      end if
+      nodes = surface_nodes(mesh, k)
+    end if
+    if (size(nodes) == 0) call raise_error(err, EXIT_INPUT, where // ': set ''' // trim(name) // ''' is empty.')
+  end subroutine resolve_node_set
+
+  !> Unique nodes of surface k, in order of first appearance.
+  function surface_nodes(mesh, k) result(nodes)
+    type(mesh_t), intent(in) :: mesh
+    integer, intent(in) :: k
+    integer, allocatable :: nodes(:)
+    logical, allocatable :: seen(:)
+    integer :: i, j, n, cnt
+    allocate(seen(mesh%nnode), source=.false.)
+    allocate(nodes(3*mesh%surfaces(k)%nedge))
+    cnt = 0
+    do i = 1, mesh%surfaces(k)%nedge
+      do j = 1, mesh%surfaces(k)%nen_edge
+        n = mesh%surfaces(k)%edge(j, i)
+        if (n <= 0) cycle
+        if (seen(n)) cycle
+        seen(n) = .true.
+        cnt = cnt + 1
+        nodes(cnt) = n
+      end do
+    end do
+    nodes = nodes(1:cnt)
+  end function surface_nodes
+
+  !> Index of the named amplitude ('' -> 0 = constant 1). The deck reader
+  !> has checked that the name exists.
+  subroutine resolve_amplitude(model, name, idx)
+    type(model_t), intent(in) :: model
+    character(len=*), intent(in) :: name
+    integer, intent(out) :: idx
+    integer :: k
+    idx = 0
+    if (len_trim(name) == 0) return
+    do k = 1, size(model%amplitudes)
+      if (model%amplitudes(k)%name == trim(name)) then
+        idx = k
+        return
+      end if
+    end do
+  end subroutine resolve_amplitude
+
+  !> Comma-separated names of the mesh's sets of one kind ('node', 'elem', 'surface').
+  function set_names(mesh, kind) result(s)
+    type(mesh_t), intent(in) :: mesh
+    character(len=*), intent(in) :: kind
+    character(len=:), allocatable :: s
+    integer :: k
+    s = ''
+    select case (kind)
+    case ('node')
+      if (allocated(mesh%nsets)) then
+        do k = 1, size(mesh%nsets)
+          s = s // merge(', ', '  ', k > 1) // mesh%nsets(k)%name
+        end do
+      end if
+    case ('elem')
+      if (allocated(mesh%esets)) then
+        do k = 1, size(mesh%esets)
+          s = s // merge(', ', '  ', k > 1) // mesh%esets(k)%name
+        end do
+      end if
+    case default
+      if (allocated(mesh%surfaces)) then
+        do k = 1, size(mesh%surfaces)
+          s = s // merge(', ', '  ', k > 1) // mesh%surfaces(k)%name
+        end do
+      end if
+    end select
+    s = trim(adjustl(s))
+    if (len(s) == 0) s = '(none)'
+  end function set_names
+end module raccord_model_build

@@ -1,0 +1,94 @@
+!> Helpers for the dynamics suites: a scene built in code, and the step
+!> sequence of the main program (raccord_main's time loop) as a routine.
+module dynamics_support
+  use raccord_kinds, only: wp, i8
+  use raccord_error, only: error_t
+  use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_PRESSURE
+  use raccord_model, only: model_t
+  use raccord_state, only: state_t
+  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  implicit none
+  private
+
+  public :: one_body_scene, add_bc, start_march, march_to, march_steps
+
+contains
+
+  !> A scene with one body on element set 'body' and no conditions yet.
+  subroutine one_body_scene(scene, young, poisson, density, plane_stress, t_end)
+    type(scene_t), intent(out) :: scene
+    real(wp), intent(in) :: young, poisson, density, t_end
+    logical, intent(in) :: plane_stress
+    scene%path = 'in-memory scene'
+    scene%dir = '.'
+    scene%run%title = 'test'
+    scene%run%output_dir = '.'
+    allocate(scene%bodies(1))
+    scene%bodies(1)%name = 'body'
+    scene%bodies(1)%elset = 'body'
+    scene%bodies(1)%young = young
+    scene%bodies(1)%poisson = poisson
+    scene%bodies(1)%density = density
+    scene%bodies(1)%plane_stress = plane_stress
+    allocate(scene%bcs(0), scene%amplitudes(0), scene%contacts(0))
+    scene%time%t_end = t_end
+  end subroutine one_body_scene
+
+  !> Append a boundary condition.
+  subroutine add_bc(scene, set, kind, comp, pressure)
+    type(scene_t), intent(inout) :: scene
+    character(len=*), intent(in) :: set
+    integer, intent(in) :: kind
+    logical, intent(in), optional :: comp(2)
+    real(wp), intent(in), optional :: pressure
+    type(bc_spec_t) :: bc
+    bc%set = set
+    bc%kind = kind
+    bc%amplitude = ''
+    if (present(comp)) bc%comp = comp
+    if (present(pressure)) bc%pressure = pressure
+    scene%bcs = [scene%bcs, bc]
+  end subroutine add_bc
+
+  !> One step of the explicit scheme, as in the main program.
+  subroutine one_step(model, state)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    call compute_forces(model, state)
+    call predict_motion(model, state)
+    call update_energy(model, state)
+  end subroutine one_step
+
+  !> Step 0: forces, predictor and energies at t = 0.
+  subroutine start_march(model, state)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    call one_step(model, state)
+  end subroutine start_march
+
+  !> March until t(n) is the step time nearest to `time` (forces, energies
+  !> and reactions are those at t(n) on return).
+  subroutine march_to(model, state, time)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    real(wp), intent(in) :: time
+    do while (state%time + 0.5_wp*state%dt < time)
+      call advance_state(state)
+      call one_step(model, state)
+    end do
+  end subroutine march_to
+
+  !> March n steps, recording the relative energy balance at each.
+  subroutine march_steps(model, state, n, balance)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    integer, intent(in) :: n
+    real(wp), intent(out) :: balance(:)
+    integer :: k
+    do k = 1, n
+      call advance_state(state)
+      call one_step(model, state)
+      balance(k) = state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
+    end do
+  end subroutine march_steps
+end module dynamics_support
