@@ -225,8 +225,11 @@ contains
           ue(i, 2, a) = u(2, node)
         end do
       end do
-      call chunk_kernel(nc, nen, blk%ngp, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), &
-        ue(:, :, 1:nen), fe(:, :, 1:nen))
+      if (blk%etype == ELEM_Q4) then
+        call kernel_q4(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
+      else
+        call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
+      end if
       do a = 1, nen
         do i = 1, nc
           node = blk%conn(a, e0 + i)
@@ -237,57 +240,133 @@ contains
     end do chunks
   end subroutine add_internal_force
 
-  !> fe = K_e ue for nc elements of a chunk, vectorised across the chunk
-  !> (theory eq. 6.1). h holds sqrt(c) J^-1 at each Gauss point.
-  pure subroutine chunk_kernel(nc, nen, ngp, lam, mu, dn, h, ue, fe)
-    integer, intent(in) :: nc, nen, ngp
-    real(wp), intent(in) :: lam, mu, dn(2, nen, ngp), h(chunk_len, 4, ngp), ue(chunk_len, 2, nen)
-    real(wp), intent(out) :: fe(chunk_len, 2, nen)
-    real(wp) :: d(chunk_len, 4), t(chunk_len, 4)
-    real(wp) :: d1, d2, g11, g12, g21, g22, tr, s11, s22, s12, mu2
+  !> fe = K_e ue for nc Q4 elements of a chunk (theory eq. 6.1); kernel_q8
+  !> is the same code with nen = 8, ngp = 9 (compile-time sizes let the
+  !> compiler unroll the node loops; a shared runtime-size kernel measured
+  !> slower). One element per iteration of the chunk loop, its nodal values
+  !> and forces in registers; the loop runs across the chunk in SIMD lanes. h holds
+  !> sqrt(c) J^-1 at each Gauss point, dn the natural derivatives.
+  pure subroutine kernel_q4(nc, lam, mu, dn, h, ue, fe)
+    integer, intent(in) :: nc
+    integer, parameter :: nen = 4, ngp = 4
+    real(wp), intent(in) :: lam, mu, dn(2, nen, ngp), h(chunk_len, 4, ngp), ue(chunk_len, 2, max_nen)
+    real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
+    real(wp) :: ux(max_nen), uy(max_nen), fx(max_nen), fy(max_nen)
+    real(wp) :: d11, d12, d21, d22, h11, h21, h12, h22, g11, g12, g21, g22, tr, s11, s22, s12, mu2
+    real(wp) :: t11, t12, t21, t22
     integer :: g, a, i
     mu2 = 2.0_wp*mu
-    fe(1:nc, :, :) = 0.0_wp
-    gauss: do g = 1, ngp
-      ! natural gradient of u: d = sum_a u_a (dN_a/dxi, dN_a/deta)
-      d(1:nc, :) = 0.0_wp
+    elements: do i = 1, nc
       do a = 1, nen
-        d1 = dn(1, a, g)
-        d2 = dn(2, a, g)
-        do i = 1, nc
-          d(i, 1) = d(i, 1) + ue(i, 1, a)*d1
-          d(i, 2) = d(i, 2) + ue(i, 1, a)*d2
-          d(i, 3) = d(i, 3) + ue(i, 2, a)*d1
-          d(i, 4) = d(i, 4) + ue(i, 2, a)*d2
-        end do
+        ux(a) = ue(i, 1, a)
+        uy(a) = ue(i, 2, a)
+        fx(a) = 0.0_wp
+        fy(a) = 0.0_wp
       end do
-      do i = 1, nc
+      gauss: do g = 1, ngp
+        ! natural gradient of u: d = sum_a u_a (dN_a/dxi, dN_a/deta)
+        d11 = 0.0_wp
+        d12 = 0.0_wp
+        d21 = 0.0_wp
+        d22 = 0.0_wp
+        do a = 1, nen
+          d11 = d11 + ux(a)*dn(1, a, g)
+          d12 = d12 + ux(a)*dn(2, a, g)
+          d21 = d21 + uy(a)*dn(1, a, g)
+          d22 = d22 + uy(a)*dn(2, a, g)
+        end do
+        h11 = h(i, 1, g)
+        h21 = h(i, 2, g)
+        h12 = h(i, 3, g)
+        h22 = h(i, 4, g)
         ! sqrt(c) grad u = d H
-        g11 = d(i, 1)*h(i, 1, g) + d(i, 2)*h(i, 2, g)
-        g12 = d(i, 1)*h(i, 3, g) + d(i, 2)*h(i, 4, g)
-        g21 = d(i, 3)*h(i, 1, g) + d(i, 4)*h(i, 2, g)
-        g22 = d(i, 3)*h(i, 3, g) + d(i, 4)*h(i, 4, g)
+        g11 = d11*h11 + d12*h21
+        g12 = d11*h12 + d12*h22
+        g21 = d21*h11 + d22*h21
+        g22 = d21*h12 + d22*h22
         ! Hooke (theory eq. 3.1), scaled by sqrt(c)
         tr = lam*(g11 + g22)
         s11 = tr + mu2*g11
         s22 = tr + mu2*g22
         s12 = mu*(g12 + g21)
-        ! t = (sqrt(c) sigma) H^T
-        t(i, 1) = s11*h(i, 1, g) + s12*h(i, 3, g)
-        t(i, 2) = s11*h(i, 2, g) + s12*h(i, 4, g)
-        t(i, 3) = s12*h(i, 1, g) + s22*h(i, 3, g)
-        t(i, 4) = s12*h(i, 2, g) + s22*h(i, 4, g)
-      end do
-      do a = 1, nen
-        d1 = dn(1, a, g)
-        d2 = dn(2, a, g)
-        do i = 1, nc
-          fe(i, 1, a) = fe(i, 1, a) + t(i, 1)*d1 + t(i, 2)*d2
-          fe(i, 2, a) = fe(i, 2, a) + t(i, 3)*d1 + t(i, 4)*d2
+        ! t = (sqrt(c) sigma) H^T; f_a += t (dN_a/dxi, dN_a/deta)
+        t11 = s11*h11 + s12*h12
+        t12 = s11*h21 + s12*h22
+        t21 = s12*h11 + s22*h12
+        t22 = s12*h21 + s22*h22
+        do a = 1, nen
+          fx(a) = fx(a) + t11*dn(1, a, g) + t12*dn(2, a, g)
+          fy(a) = fy(a) + t21*dn(1, a, g) + t22*dn(2, a, g)
         end do
+      end do gauss
+      do a = 1, nen
+        fe(i, 1, a) = fx(a)
+        fe(i, 2, a) = fy(a)
       end do
-    end do gauss
-  end subroutine chunk_kernel
+    end do elements
+  end subroutine kernel_q4
+
+  !> fe = K_e ue for nc Q8 elements of a chunk: kernel_q4 with nen = 8,
+  !> ngp = 9 (keep the two bodies identical).
+  pure subroutine kernel_q8(nc, lam, mu, dn, h, ue, fe)
+    integer, intent(in) :: nc
+    integer, parameter :: nen = 8, ngp = 9
+    real(wp), intent(in) :: lam, mu, dn(2, nen, ngp), h(chunk_len, 4, ngp), ue(chunk_len, 2, max_nen)
+    real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
+    real(wp) :: ux(max_nen), uy(max_nen), fx(max_nen), fy(max_nen)
+    real(wp) :: d11, d12, d21, d22, h11, h21, h12, h22, g11, g12, g21, g22, tr, s11, s22, s12, mu2
+    real(wp) :: t11, t12, t21, t22
+    integer :: g, a, i
+    mu2 = 2.0_wp*mu
+    elements: do i = 1, nc
+      do a = 1, nen
+        ux(a) = ue(i, 1, a)
+        uy(a) = ue(i, 2, a)
+        fx(a) = 0.0_wp
+        fy(a) = 0.0_wp
+      end do
+      gauss: do g = 1, ngp
+        ! natural gradient of u: d = sum_a u_a (dN_a/dxi, dN_a/deta)
+        d11 = 0.0_wp
+        d12 = 0.0_wp
+        d21 = 0.0_wp
+        d22 = 0.0_wp
+        do a = 1, nen
+          d11 = d11 + ux(a)*dn(1, a, g)
+          d12 = d12 + ux(a)*dn(2, a, g)
+          d21 = d21 + uy(a)*dn(1, a, g)
+          d22 = d22 + uy(a)*dn(2, a, g)
+        end do
+        h11 = h(i, 1, g)
+        h21 = h(i, 2, g)
+        h12 = h(i, 3, g)
+        h22 = h(i, 4, g)
+        ! sqrt(c) grad u = d H
+        g11 = d11*h11 + d12*h21
+        g12 = d11*h12 + d12*h22
+        g21 = d21*h11 + d22*h21
+        g22 = d21*h12 + d22*h22
+        ! Hooke (theory eq. 3.1), scaled by sqrt(c)
+        tr = lam*(g11 + g22)
+        s11 = tr + mu2*g11
+        s22 = tr + mu2*g22
+        s12 = mu*(g12 + g21)
+        ! t = (sqrt(c) sigma) H^T; f_a += t (dN_a/dxi, dN_a/deta)
+        t11 = s11*h11 + s12*h12
+        t12 = s11*h21 + s12*h22
+        t21 = s12*h11 + s22*h12
+        t22 = s12*h21 + s22*h22
+        do a = 1, nen
+          fx(a) = fx(a) + t11*dn(1, a, g) + t12*dn(2, a, g)
+          fy(a) = fy(a) + t21*dn(1, a, g) + t22*dn(2, a, g)
+        end do
+      end do gauss
+      do a = 1, nen
+        fe(i, 1, a) = fx(a)
+        fe(i, 2, a) = fy(a)
+      end do
+    end do elements
+  end subroutine kernel_q8
 
   !> sqrt(c) dN_a/dx (row 1) and dN_a/dy (row 2) of element e at Gauss point g.
   pure subroutine scaled_gradients(blk, e, g, gr)
