@@ -1,0 +1,560 @@
+!> Reader for the Abaqus / CalculiX .inp subset that describes a 2D mesh.
+!>
+!> Read: *NODE (id, x, y[, z]); *ELEMENT, TYPE=CPE4|CPS4|CPE8|CPS8 (and the
+!> R variants, read as fully integrated); *NSET and *ELSET (ids, set names,
+!> or GENERATE ranges); *SURFACE, TYPE=ELEMENT with "elset-or-element, Sn"
+!> faces; *INCLUDE, INPUT=file (textual, relative to the including file).
+!> Other keywords are material, step or load data and are skipped: the
+!> scene deck gives those. Keywords, parameters and set names are
+!> case-insensitive, as in Abaqus; a set keeps the spelling of its first
+!> definition. A line ending with a comma continues on the next line.
+!> Reference: Abaqus Keywords Reference Guide (input syntax rules) and the
+!> CalculiX CrunchiX user's manual, section 8 (input deck format).
+module raccord_abaqus_reader
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_log, only: log_info
+  use raccord_strings, only: str, lower
+  use raccord_mesh, only: ELEM_Q4, ELEM_Q8
+  use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
+    split_fields, parse_int, parse_real
+  use raccord_mesh_draft, only: mesh_draft_t, add_file, add_node, add_element, find_group, add_group, &
+    add_member, add_draft_surface, add_edge_by_side
+  implicit none
+  private
+
+  public :: read_abaqus
+
+  integer, parameter :: BLK_NONE = 0, BLK_SKIP = 1, BLK_NODE = 2, BLK_ELEMENT = 3, BLK_NSET = 4, &
+    BLK_ELSET = 5, BLK_SURFACE = 6
+  !> *INCLUDE nesting beyond this is taken for a file including itself.
+  integer, parameter :: MAX_INCLUDE_DEPTH = 10
+  character(len=*), parameter :: caller = 'read_abaqus'
+
+  !> The keyword block the data lines belong to; it carries over *INCLUDE,
+  !> whose file may hold just the data lines of the including block.
+  type :: abaqus_state_t
+    integer :: block = BLK_NONE
+    character(len=:), allocatable :: keyword    !< as written, for messages
+    integer :: etype = 0, nen = 0
+    integer :: set = 0                         !< set filled by the block (NSET=, ELSET=), 0 if none
+    integer :: surf = 0
+    logical :: generate = .false.
+    character(len=:), allocatable :: ignored   !< keywords skipped, for one log line
+    character(len=:), allocatable :: reduced   !< reduced-integration types met
+  end type abaqus_state_t
+
+  !> A logical line: its text and where it starts.
+  type :: source_line_t
+    character(len=:), allocatable :: text
+    integer :: ifile = 0, line = 0
+  end type source_line_t
+
+contains
+
+  !> Read an .inp file (and its includes) into the draft.
+  subroutine read_abaqus(path, d, err)
+    character(len=*), intent(in) :: path
+    type(mesh_draft_t), intent(inout) :: d
+    type(error_t), intent(inout) :: err
+    type(abaqus_state_t) :: st
+    d%format_name = 'abaqus'
+    st%ignored = ''
+    st%reduced = ''
+    st%keyword = ''
+    call read_inp_file(path, d, st, 0, err)
+    if (err%failed()) return
+    if (len(st%ignored) > 0) call log_info(caller, 'skipped keywords that carry no mesh data (the scene ' // &
+      'deck gives materials, steps and loads): ' // st%ignored)
+    if (len(st%reduced) > 0) call log_info(caller, 'element types ' // st%reduced // ' read as Q4/Q8: ' // &
+      'raccord integrates fully (2x2 / 3x3 Gauss points), there is no reduced integration')
+  end subroutine read_abaqus
+
+  recursive subroutine read_inp_file(path, d, st, depth, err)
+    character(len=*), intent(in) :: path
+    type(mesh_draft_t), intent(inout) :: d
+    type(abaqus_state_t), intent(inout) :: st
+    integer, intent(in) :: depth
+    type(error_t), intent(inout) :: err
+    type(text_file_t) :: tf
+    type(source_line_t) :: sl
+    character(len=:), allocatable :: pending
+    integer :: ifile, pending_no
+    logical :: eof, have_pending
+
+    call open_text_file(tf, path, err)
+    if (err%failed()) return
+    call add_file(d, path, ifile)
+    have_pending = .false.
+    pending_no = 0
+    lines: do
+      ! one logical line: a raw line plus the lines its trailing commas join
+      if (have_pending) then
+        sl%text = pending
+        sl%line = pending_no
+        have_pending = .false.
+      else
+        call next_raw_line(tf, sl%text, eof, err)
+        if (err%failed() .or. eof) exit lines
+        sl%line = tf%line_no
+      end if
+      sl%ifile = ifile
+      do while (ends_with_comma(sl%text))
+        call next_raw_line(tf, pending, eof, err)
+        if (err%failed()) exit lines
+        if (eof) exit
+        if (pending(1:1) == '*') then
+          ! a keyword cannot continue a line: the comma was only trailing
+          have_pending = .true.
+          pending_no = tf%line_no
+          exit
+        end if
+        sl%text = sl%text // ' ' // pending
+      end do
+      if (sl%text(1:1) == '*') then
+        call take_keyword(sl, path, d, st, depth, err)
+      else
+        call take_data(sl, d, st, err)
+      end if
+      if (err%failed()) exit lines
+    end do lines
+    call close_text_file(tf)
+  end subroutine read_inp_file
+
+  !> Next line that is neither blank nor a ** comment, left-adjusted and trimmed.
+  subroutine next_raw_line(tf, text, eof, err)
+    type(text_file_t), intent(inout) :: tf
+    character(len=:), allocatable, intent(out) :: text
+    logical, intent(out) :: eof
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: line
+    do
+      call read_line(tf, line, eof, err)
+      if (err%failed() .or. eof) then
+        text = ''
+        eof = .true.
+        return
+      end if
+      text = trim(adjustl(line))
+      if (len(text) == 0) cycle
+      if (len(text) >= 2) then
+        if (text(1:2) == '**') cycle
+      end if
+      return
+    end do
+  end subroutine next_raw_line
+
+  pure logical function ends_with_comma(s)
+    character(len=*), intent(in) :: s
+    ends_with_comma = .false.
+    if (len_trim(s) > 0) ends_with_comma = s(len_trim(s):len_trim(s)) == ','
+  end function ends_with_comma
+
+  !> A keyword line opens a block (or includes a file).
+  recursive subroutine take_keyword(sl, path, d, st, depth, err)
+    type(source_line_t), intent(in) :: sl
+    character(len=*), intent(in) :: path
+    type(mesh_draft_t), intent(inout) :: d
+    type(abaqus_state_t), intent(inout) :: st
+    integer, intent(in) :: depth
+    type(error_t), intent(inout) :: err
+    integer, allocatable :: f(:), l(:)
+    integer :: nf, k
+    character(len=:), allocatable :: kw, at, name, typ, inc
+    logical :: found
+
+    call split_fields(sl%text, ',', f, l, nf)
+    kw = lower(sl%text(2:l(1)))
+    at = loc_text(d, sl)
+
+    if (kw == 'include') then
+      ! textual inclusion: the current block goes on into the included file,
+      ! which may hold just its data lines
+      call get_param(sl%text, f, l, nf, 'input', inc, found)
+      if (.not. found .or. len(inc) == 0) then
+        call raise_error(err, EXIT_INPUT, at // ': *INCLUDE needs INPUT=file')
+        return
+      end if
+      if (depth >= MAX_INCLUDE_DEPTH) then
+        call raise_error(err, EXIT_INPUT, at // ': *INCLUDE nested more than ' // str(MAX_INCLUDE_DEPTH) // &
+          ' deep: does a file include itself?')
+        return
+      end if
+      if (inc(1:1) /= '/') then
+        k = index(path, '/', back=.true.)
+        inc = path(1:k) // inc
+      end if
+      call read_inp_file(inc, d, st, depth + 1, err)
+      if (err%failed()) then
+        if (allocated(err%message)) err%message = err%message // ' (included from ' // at // ')'
+      end if
+      return
+    end if
+
+    st%keyword = '*' // sl%text(2:l(1))
+    st%set = 0
+    st%surf = 0
+    st%generate = has_flag(sl%text, f, l, nf, 'generate')
+
+    if (kw == 'node' .or. kw == 'element' .or. kw == 'nset' .or. kw == 'elset') then
+      call get_param(sl%text, f, l, nf, 'input', inc, found)
+      if (found) then
+        call raise_error(err, EXIT_INPUT, at // ': INPUT= on ' // st%keyword // ' is not supported: ' // &
+          'write the data lines after the keyword, or use *INCLUDE, INPUT=' // inc // ' on the next line')
+        return
+      end if
+    end if
+
+    select case (kw)
+    case ('node')
+      st%block = BLK_NODE
+      call get_param(sl%text, f, l, nf, 'nset', name, found)
+      if (found) call add_group(d%nsets, d%nnset, name, .true., st%set)
+    case ('element')
+      st%block = BLK_ELEMENT
+      call get_param(sl%text, f, l, nf, 'type', typ, found)
+      if (.not. found) then
+        call raise_error(err, EXIT_INPUT, at // ': *ELEMENT needs TYPE= (CPE4, CPS4, CPE8 or CPS8)')
+        return
+      end if
+      call element_type(lower(typ), st%etype, st%nen, found)
+      if (.not. found) then
+        call raise_error(err, EXIT_INPUT, at // ': element TYPE=' // typ // ' is not supported; raccord ' // &
+          'reads CPE4, CPS4, CPE8, CPS8 (and CPE4R, CPS4R, CPE8R, CPS8R): ' // type_hint(lower(typ)))
+        return
+      end if
+      if (lower(typ(len(typ):)) == 'r' .and. index(st%reduced, typ) == 0) then
+        if (len(st%reduced) > 0) st%reduced = st%reduced // ', '
+        st%reduced = st%reduced // typ
+      end if
+      call get_param(sl%text, f, l, nf, 'elset', name, found)
+      if (found) call add_group(d%esets, d%neset, name, .true., st%set)
+    case ('nset', 'elset')
+      call get_param(sl%text, f, l, nf, kw, name, found)
+      if (.not. found .or. len(name) == 0) then
+        call raise_error(err, EXIT_INPUT, at // ': ' // st%keyword // ' needs its name: ' // &
+          st%keyword // ', ' // kw // '=name')
+        return
+      end if
+      if (kw == 'nset') then
+        st%block = BLK_NSET
+        call add_group(d%nsets, d%nnset, name, .true., st%set)
+      else
+        st%block = BLK_ELSET
+        call add_group(d%esets, d%neset, name, .true., st%set)
+      end if
+    case ('surface')
+      st%block = BLK_SURFACE
+      call get_param(sl%text, f, l, nf, 'name', name, found)
+      if (.not. found .or. len(name) == 0) then
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE needs its name: *SURFACE, NAME=name, TYPE=ELEMENT')
+        return
+      end if
+      call get_param(sl%text, f, l, nf, 'type', typ, found)
+      if (found .and. lower(typ) /= 'element') then
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, TYPE=' // typ // ' is not supported: ' // &
+          'use TYPE=ELEMENT with "element-or-elset, S1..S4" lines (or a *NSET for a node set)')
+        return
+      end if
+      call add_draft_surface(d, name, .true., st%surf)
+    case default
+      st%block = BLK_SKIP
+      if (index(', ' // lower(st%ignored) // ', ', ', ' // lower(st%keyword) // ', ') == 0) then
+        if (len(st%ignored) > 0) st%ignored = st%ignored // ', '
+        st%ignored = st%ignored // st%keyword
+      end if
+    end select
+  end subroutine take_keyword
+
+  !> A data line of the current block.
+  subroutine take_data(sl, d, st, err)
+    type(source_line_t), intent(in) :: sl
+    type(mesh_draft_t), intent(inout) :: d
+    type(abaqus_state_t), intent(inout) :: st
+    type(error_t), intent(inout) :: err
+    integer, allocatable :: f(:), l(:)
+    integer :: nf, id, k, a
+    integer :: conn(8)
+    real(wp) :: xy(2)
+    character(len=:), allocatable :: at
+
+    at = loc_text(d, sl)
+    call split_fields(sl%text, ',', f, l, nf)
+    select case (st%block)
+    case (BLK_NONE)
+      call raise_error(err, EXIT_INPUT, at // ': data line before any keyword: start the file with a ' // &
+        'keyword line such as *NODE')
+    case (BLK_SKIP)
+      return
+    case (BLK_NODE)
+      if (nf < 3 .or. nf > 4) then
+        call raise_error(err, EXIT_INPUT, at // ': a *NODE line is "id, x, y[, z]", found ' // str(nf) // ' fields')
+        return
+      end if
+      call field_int(sl, d, f, l, 1, 'node id', id, err)
+      call field_real(sl, d, f, l, 2, 'x', xy(1), err)
+      call field_real(sl, d, f, l, 3, 'y', xy(2), err)
+      if (err%failed()) return
+      call add_node(d, id, xy, sl%ifile, sl%line)
+      if (st%set > 0) call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
+    case (BLK_ELEMENT)
+      if (nf /= 1 + st%nen) then
+        call raise_error(err, EXIT_INPUT, at // ': an element of ' // st%keyword // ' needs its id and ' // &
+          str(st%nen) // ' node ids, found ' // str(nf) // ' fields (continue a long line with a trailing comma)')
+        return
+      end if
+      call field_int(sl, d, f, l, 1, 'element id', id, err)
+      do a = 1, st%nen
+        call field_int(sl, d, f, l, 1 + a, 'node id', conn(a), err)
+      end do
+      if (err%failed()) return
+      call add_element(d, id, st%etype, conn(1:st%nen), sl%ifile, sl%line)
+      if (st%set > 0) call add_member(d%esets(st%set), id, sl%ifile, sl%line)
+    case (BLK_NSET, BLK_ELSET)
+      if (st%generate) then
+        call take_generate(sl, d, st, f, l, nf, err)
+        return
+      end if
+      do k = 1, nf
+        if (f(k) > l(k)) cycle
+        call take_set_entry(sl, d, st, sl%text(f(k):l(k)), err)
+        if (err%failed()) return
+      end do
+    case (BLK_SURFACE)
+      call take_face(sl, d, st, f, l, nf, err)
+    end select
+  end subroutine take_data
+
+  !> "first, last[, step]" of a GENERATE set.
+  subroutine take_generate(sl, d, st, f, l, nf, err)
+    type(source_line_t), intent(in) :: sl
+    type(mesh_draft_t), intent(inout) :: d
+    type(abaqus_state_t), intent(in) :: st
+    integer, intent(in) :: f(:), l(:), nf
+    type(error_t), intent(inout) :: err
+    integer :: first, last, step, id
+    if (nf < 2 .or. nf > 3) then
+      call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': a GENERATE line is "first, last[, step]", found ' // &
+        str(nf) // ' fields')
+      return
+    end if
+    step = 1
+    call field_int(sl, d, f, l, 1, 'first id', first, err)
+    call field_int(sl, d, f, l, 2, 'last id', last, err)
+    if (nf == 3) call field_int(sl, d, f, l, 3, 'step', step, err)
+    if (err%failed()) return
+    if (step <= 0 .or. last < first) then
+      call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': GENERATE needs first <= last and step > 0, found ' // &
+        str(first) // ', ' // str(last) // ', ' // str(step))
+      return
+    end if
+    do id = first, last, step
+      if (st%block == BLK_NSET) then
+        call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
+      else
+        call add_member(d%esets(st%set), id, sl%ifile, sl%line)
+      end if
+    end do
+  end subroutine take_generate
+
+  !> One entry of an *NSET / *ELSET line: an id, or the name of a set of the
+  !> same kind defined earlier (its members are copied in).
+  subroutine take_set_entry(sl, d, st, entry, err)
+    type(source_line_t), intent(in) :: sl
+    type(mesh_draft_t), intent(inout) :: d
+    type(abaqus_state_t), intent(in) :: st
+    character(len=*), intent(in) :: entry
+    type(error_t), intent(inout) :: err
+    integer :: id, k, m
+    integer, allocatable :: ids(:)
+    logical :: ok
+    call parse_int(entry, id, ok)
+    if (st%block == BLK_NSET) then
+      if (ok) then
+        call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
+        return
+      end if
+      k = find_group(d%nsets, d%nnset, entry, .true.)
+      if (k == 0) then
+        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
+          ' is neither a node id nor a node set defined above: define the set with *NSET before this line')
+        return
+      end if
+      ids = d%nsets(k)%id(1:d%nsets(k)%n)      ! copy: the target may be this very set
+      do m = 1, size(ids)
+        call add_member(d%nsets(st%set), ids(m), sl%ifile, sl%line)
+      end do
+    else
+      if (ok) then
+        call add_member(d%esets(st%set), id, sl%ifile, sl%line)
+        return
+      end if
+      k = find_group(d%esets, d%neset, entry, .true.)
+      if (k == 0) then
+        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
+          ' is neither an element id nor an element set defined above: define the set with *ELSET ' // &
+          '(or ELSET= on *ELEMENT) before this line')
+        return
+      end if
+      ids = d%esets(k)%id(1:d%esets(k)%n)
+      do m = 1, size(ids)
+        call add_member(d%esets(st%set), ids(m), sl%ifile, sl%line)
+      end do
+    end if
+  end subroutine take_set_entry
+
+  !> "element-or-elset, Sn" of an element-based *SURFACE.
+  subroutine take_face(sl, d, st, f, l, nf, err)
+    type(source_line_t), intent(in) :: sl
+    type(mesh_draft_t), intent(inout) :: d
+    type(abaqus_state_t), intent(in) :: st
+    integer, intent(in) :: f(:), l(:), nf
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: at, target, face
+    integer :: side, id, k, m
+    integer, allocatable :: ids(:)
+    logical :: ok
+    at = loc_text(d, sl)
+    if (nf /= 2) then
+      call raise_error(err, EXIT_INPUT, at // ': a *SURFACE line is "element-or-elset, S1..S4", found ' // &
+        str(nf) // ' field(s): give the face of each element (raccord does not guess free faces)')
+      return
+    end if
+    target = sl%text(f(1):l(1))
+    face = lower(sl%text(f(2):l(2)))
+    side = 0
+    select case (face)
+    case ('s1'); side = 1
+    case ('s2'); side = 2
+    case ('s3'); side = 3
+    case ('s4'); side = 4
+    case default
+      call raise_error(err, EXIT_INPUT, at // ': face "' // sl%text(f(2):l(2)) // '" is not a side of a ' // &
+        'quadrilateral: use S1 (nodes 1-2), S2 (2-3), S3 (3-4) or S4 (4-1)')
+      return
+    end select
+    call parse_int(target, id, ok)
+    if (ok) then
+      call add_edge_by_side(d%surfaces(st%surf), id, side, sl%ifile, sl%line)
+      return
+    end if
+    k = find_group(d%esets, d%neset, target, .true.)
+    if (k == 0) then
+      call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // d%surfaces(st%surf)%name // &
+        '" uses element set "' // target // '", which is undefined: define it with *ELSET (or ELSET= on ' // &
+        '*ELEMENT) before the surface, or correct the name')
+      return
+    end if
+    ids = d%esets(k)%id(1:d%esets(k)%n)
+    do m = 1, size(ids)
+      call add_edge_by_side(d%surfaces(st%surf), ids(m), side, sl%ifile, sl%line)
+    end do
+  end subroutine take_face
+
+  !> raccord element type and node count of an Abaqus element type.
+  pure subroutine element_type(typ, etype, nen, found)
+    character(len=*), intent(in) :: typ
+    integer, intent(out) :: etype, nen
+    logical, intent(out) :: found
+    found = .true.
+    select case (typ)
+    case ('cpe4', 'cps4', 'cpe4r', 'cps4r')
+      etype = ELEM_Q4
+      nen = 4
+    case ('cpe8', 'cps8', 'cpe8r', 'cps8r')
+      etype = ELEM_Q8
+      nen = 8
+    case default
+      etype = 0
+      nen = 0
+      found = .false.
+    end select
+  end subroutine element_type
+
+  pure function type_hint(typ) result(s)
+    character(len=*), intent(in) :: typ
+    character(len=:), allocatable :: s
+    if (index(typ, 'cpe3') == 1 .or. index(typ, 'cps3') == 1 .or. index(typ, 'cpe6') == 1 .or. &
+        index(typ, 'cps6') == 1) then
+      s = 'remesh with quadrilaterals'
+    else if (index(typ, 'cax') == 1) then
+      s = 'axisymmetric elements are not supported; use a plane model'
+    else
+      s = 'remesh with 4- or 8-node plane quadrilaterals'
+    end if
+  end function type_hint
+
+  !> Value of parameter key (lower case) on a keyword line; quotes removed.
+  subroutine get_param(text, f, l, nf, key, value, found)
+    character(len=*), intent(in) :: text, key
+    integer, intent(in) :: f(:), l(:), nf
+    character(len=:), allocatable, intent(out) :: value
+    logical, intent(out) :: found
+    integer :: k, eq
+    found = .false.
+    value = ''
+    do k = 2, nf
+      if (f(k) > l(k)) cycle
+      eq = index(text(f(k):l(k)), '=')
+      if (eq == 0) cycle
+      if (lower(trim(text(f(k):f(k) + eq - 2))) /= key) cycle
+      value = trim(adjustl(text(f(k) + eq:l(k))))
+      if (len(value) >= 2) then
+        if (value(1:1) == '"' .and. value(len(value):len(value)) == '"') value = value(2:len(value) - 1)
+      end if
+      found = .true.
+      return
+    end do
+  end subroutine get_param
+
+  !> True when a keyword line carries the bare parameter key (lower case).
+  logical function has_flag(text, f, l, nf, key)
+    character(len=*), intent(in) :: text, key
+    integer, intent(in) :: f(:), l(:), nf
+    integer :: k
+    has_flag = .false.
+    do k = 2, nf
+      if (f(k) > l(k)) cycle
+      if (lower(text(f(k):l(k))) == key) has_flag = .true.
+    end do
+  end function has_flag
+
+  function loc_text(d, sl) result(s)
+    type(mesh_draft_t), intent(in) :: d
+    type(source_line_t), intent(in) :: sl
+    character(len=:), allocatable :: s
+    s = d%files(sl%ifile)%path // ':' // str(sl%line)
+  end function loc_text
+
+  subroutine field_int(sl, d, f, l, k, what, value, err)
+    type(source_line_t), intent(in) :: sl
+    type(mesh_draft_t), intent(in) :: d
+    integer, intent(in) :: f(:), l(:), k
+    character(len=*), intent(in) :: what
+    integer, intent(out) :: value
+    type(error_t), intent(inout) :: err
+    logical :: ok
+    value = 0
+    if (err%failed()) return
+    ok = .false.
+    if (f(k) <= l(k)) call parse_int(sl%text(f(k):l(k)), value, ok)
+    if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
+      ') is "' // sl%text(f(k):l(k)) // '", not an integer')
+  end subroutine field_int
+
+  subroutine field_real(sl, d, f, l, k, what, value, err)
+    type(source_line_t), intent(in) :: sl
+    type(mesh_draft_t), intent(in) :: d
+    integer, intent(in) :: f(:), l(:), k
+    character(len=*), intent(in) :: what
+    real(wp), intent(out) :: value
+    type(error_t), intent(inout) :: err
+    logical :: ok
+    value = 0.0_wp
+    if (err%failed()) return
+    ok = .false.
+    if (f(k) <= l(k)) call parse_real(sl%text(f(k):l(k)), value, ok)
+    if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
+      ') is "' // sl%text(f(k):l(k)) // '", not a number')
+  end subroutine field_real
+end module raccord_abaqus_reader

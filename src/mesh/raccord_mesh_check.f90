@@ -1,0 +1,466 @@
+!> Checks shared by every mesh format, and the step from the file's view
+!> (mesh_draft_t: file ids, sets by id) to the solver's (mesh_t: internal
+!> indices, surfaces attached to their parent elements).
+!>
+!> Order matters: ids are checked first so every later message can trust
+!> them; unreferenced nodes are dropped before the sets are resolved so that
+!> no set carries a node without mass; element shape is checked before the
+!> surfaces, whose orientation relies on counter-clockwise elements.
+module raccord_mesh_check
+  use raccord_kinds, only: wp, i8
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_log, only: log_info, log_warn
+  use raccord_strings, only: str, lower
+  use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key
+  use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, &
+    nodes_per_element, side_nodes
+  use raccord_mesh_draft, only: mesh_draft_t, where_text
+  use raccord_mesh_quality, only: check_element_shape, SHAPE_OK, SHAPE_CLOCKWISE, DEGENERATE_RTOL
+  implicit none
+  private
+
+  public :: finalize_mesh
+
+  character(len=*), parameter :: caller = 'finalize_mesh'
+
+contains
+
+  !> Check the draft and build the mesh from it. mesh%source is left to the caller.
+  subroutine finalize_mesh(d, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(mesh_t), intent(inout) :: mesh
+    type(error_t), intent(inout) :: err
+    integer, allocatable :: new_node(:)     ! draft node -> mesh node (0: dropped)
+    type(int_map_t) :: node_map, elem_map
+
+    if (d%nelem == 0) then
+      call raise_error(err, EXIT_INPUT, where_text(d, 1, 0) // ' contains no 2D element (Q4 or Q8): ' // &
+        hint(d, 'no_elements'))
+      return
+    end if
+    call map_ids(d, node_map, elem_map, err)
+    if (err%failed()) return
+    call build_elements(d, node_map, new_node, mesh, err)
+    if (err%failed()) return
+    call check_shapes(d, mesh, err)
+    if (err%failed()) return
+    call build_elem_sets(d, elem_map, mesh, err)
+    if (err%failed()) return
+    call build_node_sets(d, node_map, new_node, mesh, err)
+    if (err%failed()) return
+    call build_surfaces(d, node_map, elem_map, new_node, mesh, err)
+  end subroutine finalize_mesh
+
+  !> File id -> draft index maps; a repeated id is an error at its second use.
+  subroutine map_ids(d, node_map, elem_map, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(int_map_t), intent(out) :: node_map, elem_map
+    type(error_t), intent(inout) :: err
+    integer :: k, prev
+    call map_init(node_map, d%nnode)
+    do k = 1, d%nnode
+      call map_insert(node_map, int(d%node_id(k), i8), k, prev)
+      if (prev /= 0) then
+        call raise_error(err, EXIT_INPUT, where_text(d, d%node_file(k), d%node_line(k)) // &
+          ': duplicate node id ' // str(d%node_id(k)) // ' (first defined at ' // &
+          where_text(d, d%node_file(prev), d%node_line(prev)) // '): node ids must be unique; renumber the nodes')
+        return
+      end if
+    end do
+    call map_init(elem_map, d%nelem)
+    do k = 1, d%nelem
+      call map_insert(elem_map, int(d%elem_id(k), i8), k, prev)
+      if (prev /= 0) then
+        call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(k), d%elem_line(k)) // &
+          ': duplicate element id ' // str(d%elem_id(k)) // ' (first defined at ' // &
+          where_text(d, d%elem_file(prev), d%elem_line(prev)) // &
+          '): element ids must be unique; renumber the elements')
+        return
+      end if
+    end do
+  end subroutine map_ids
+
+  !> Connectivity in draft indices, then keep only the nodes some 2D element
+  !> uses (a node without element has no mass and would stop the explicit
+  !> time step), numbered in file order.
+  subroutine build_elements(d, node_map, new_node, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(int_map_t), intent(in) :: node_map
+    integer, allocatable, intent(out) :: new_node(:)
+    type(mesh_t), intent(inout) :: mesh
+    type(error_t), intent(inout) :: err
+    integer :: e, a, nen, k, n
+    integer, allocatable :: conn(:,:)
+
+    allocate(conn(MAX_NEN, d%nelem), new_node(d%nnode))
+    conn = 0
+    new_node = 0
+    do e = 1, d%nelem
+      nen = nodes_per_element(d%etype(e))
+      do a = 1, nen
+        k = map_get(node_map, int(d%conn(a, e), i8))
+        if (k == 0) then
+          call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(e), d%elem_line(e)) // &
+            ': element ' // str(d%elem_id(e)) // ' references node ' // str(d%conn(a, e)) // &
+            ', which is not defined: ' // hint(d, 'unknown_node'))
+          return
+        end if
+        conn(a, e) = k
+        new_node(k) = 1
+      end do
+      if (nen > 0) then
+        do a = 1, nen - 1
+          if (any(conn(a + 1:nen, e) == conn(a, e))) then
+            call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(e), d%elem_line(e)) // &
+              ': element ' // str(d%elem_id(e)) // ' lists node ' // str(d%conn(a, e)) // &
+              ' twice: the element is degenerate; fix its connectivity or remesh')
+            return
+          end if
+        end do
+      end if
+    end do
+
+    n = 0
+    do k = 1, d%nnode
+      if (new_node(k) /= 0) then
+        n = n + 1
+        new_node(k) = n
+      end if
+    end do
+    if (n < d%nnode) call log_info(caller, 'dropped ' // str(d%nnode - n) // &
+      ' node(s) used by no 2D element (they would have no mass)')
+
+    mesh%nnode = n
+    mesh%nelem = d%nelem
+    allocate(mesh%x(2, n), mesh%node_id(n))
+    do k = 1, d%nnode
+      if (new_node(k) == 0) cycle
+      mesh%x(:, new_node(k)) = d%x(:, k)
+      mesh%node_id(new_node(k)) = d%node_id(k)
+    end do
+    mesh%etype = d%etype(1:d%nelem)
+    mesh%elem_id = d%elem_id(1:d%nelem)
+    allocate(mesh%conn(MAX_NEN, d%nelem))
+    mesh%conn = 0
+    do e = 1, d%nelem
+      nen = nodes_per_element(d%etype(e))
+      mesh%conn(1:nen, e) = new_node(conn(1:nen, e))
+    end do
+  end subroutine build_elements
+
+  !> Every element must map the reference square one-to-one.
+  subroutine check_shapes(d, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(mesh_t), intent(in) :: mesh
+    type(error_t), intent(inout) :: err
+    integer :: e, nen, status
+    real(wp) :: worst
+    character(len=:), allocatable :: at_point, loc
+    do e = 1, mesh%nelem
+      nen = nodes_per_element(mesh%etype(e))
+      call check_element_shape(mesh%etype(e), mesh%x(:, mesh%conn(1:nen, e)), status, worst, at_point)
+      if (status == SHAPE_OK) cycle
+      loc = where_text(d, d%elem_file(e), d%elem_line(e)) // ': element ' // str(mesh%elem_id(e))
+      if (status == SHAPE_CLOCKWISE) then
+        call raise_error(err, EXIT_INPUT, loc // ' has its node order clockwise (det J < 0 at every ' // &
+          'corner and Gauss point); raccord needs counter-clockwise elements: ' // hint(d, 'clockwise'))
+      else
+        call raise_error(err, EXIT_INPUT, loc // ' is inverted or degenerate: det J / (h/2)^2 = ' // &
+          str(worst, 3) // ' at ' // at_point // ' (must exceed ' // str(DEGENERATE_RTOL, 1) // &
+          '); look for coincident or crossed corners, an interior angle of 180 degrees or more, or ' // &
+          'a Q8 mid-side node far from the middle of its side, and remesh or fix the coordinates')
+      end if
+      return
+    end do
+  end subroutine check_shapes
+
+  subroutine build_elem_sets(d, elem_map, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(int_map_t), intent(in) :: elem_map
+    type(mesh_t), intent(inout) :: mesh
+    type(error_t), intent(inout) :: err
+    integer :: s, m, k
+    integer, allocatable :: list(:)
+    allocate(mesh%esets(d%neset))
+    do s = 1, d%neset
+      associate (g => d%esets(s))
+        allocate(list(g%n))
+        do m = 1, g%n
+          k = map_get(elem_map, int(g%id(m), i8))
+          if (k == 0) then
+            call raise_error(err, EXIT_INPUT, where_text(d, g%file(m), g%line(m)) // ': element set "' // &
+              g%name // '" lists element ' // str(g%id(m)) // ', which is not a defined 2D element: ' // &
+              'define it or remove it from the set')
+            return
+          end if
+          list(m) = k
+        end do
+        call sort_unique(list, k)
+        mesh%esets(s)%name = g%name
+        mesh%esets(s)%elems = list(1:k)
+        deallocate(list)
+      end associate
+    end do
+  end subroutine build_elem_sets
+
+  subroutine build_node_sets(d, node_map, new_node, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(int_map_t), intent(in) :: node_map
+    integer, intent(in) :: new_node(:)
+    type(mesh_t), intent(inout) :: mesh
+    type(error_t), intent(inout) :: err
+    integer :: s, m, k, n
+    integer, allocatable :: list(:)
+    allocate(mesh%nsets(d%nnset))
+    do s = 1, d%nnset
+      associate (g => d%nsets(s))
+        allocate(list(g%n))
+        n = 0
+        do m = 1, g%n
+          k = map_get(node_map, int(g%id(m), i8))
+          if (k == 0) then
+            call raise_error(err, EXIT_INPUT, where_text(d, g%file(m), g%line(m)) // ': node set "' // &
+              g%name // '" lists node ' // str(g%id(m)) // ', which is not defined: ' // &
+              'define it or remove it from the set')
+            return
+          end if
+          if (new_node(k) == 0) cycle       ! dropped node: no element, no mass
+          n = n + 1
+          list(n) = new_node(k)
+        end do
+        call sort_unique(list(1:n), k)
+        if (k == 0 .and. g%n > 0) call log_warn(caller, 'node set "' // g%name // &
+          '" is empty: none of its nodes belongs to a 2D element')
+        mesh%nsets(s)%name = g%name
+        mesh%nsets(s)%nodes = list(1:k)
+        deallocate(list)
+      end associate
+    end do
+  end subroutine build_node_sets
+
+  !> Attach each surface edge to the element side with the same corner pair
+  !> (hash of the sorted pair, O(n)) and store it in the parent's
+  !> counter-clockwise order, so the outward normal is the tangent turned
+  !> clockwise. A side shared by two elements is interior: elem = -1.
+  !> Each surface also gives (or joins) the node set of its name.
+  subroutine build_surfaces(d, node_map, elem_map, new_node, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(int_map_t), intent(in) :: node_map, elem_map
+    integer, intent(in) :: new_node(:)
+    type(mesh_t), intent(inout) :: mesh
+    type(error_t), intent(inout) :: err
+    type(int_map_t) :: side_map
+    logical, allocatable :: shared(:)
+    integer :: e, s, k, prev, j, m, e_par, s_par, ends(3), loc(3), nen_max
+    integer, allocatable :: nodes(:)
+    character(len=:), allocatable :: at
+
+    call map_init(side_map, 4*mesh%nelem)
+    allocate(shared(4*mesh%nelem))
+    shared = .false.
+    do e = 1, mesh%nelem
+      do s = 1, 4
+        loc = side_nodes(mesh%etype(e), s)
+        call map_insert(side_map, pair_key(mesh%conn(loc(1), e), mesh%conn(loc(2), e)), 4*(e - 1) + s, prev)
+        if (prev /= 0) shared(prev) = .true.
+      end do
+    end do
+
+    allocate(mesh%surfaces(d%nsurf))
+    do j = 1, d%nsurf
+      associate (ds => d%surfaces(j), surf => mesh%surfaces(j))
+        surf%name = ds%name
+        surf%nedge = ds%n
+        allocate(surf%edge(3, ds%n), surf%elem(ds%n), surf%side(ds%n))
+        nen_max = 2
+        do m = 1, ds%n
+          ends = 0
+          at = where_text(d, ds%file(m), ds%line(m)) // ': surface "' // ds%name // '"'
+          if (ds%elem(m) /= 0) then
+            ! given as element face (Abaqus)
+            e_par = map_get(elem_map, int(ds%elem(m), i8))
+            if (e_par == 0) then
+              call raise_error(err, EXIT_INPUT, at // ' names element ' // str(ds%elem(m)) // &
+                ', which is not a defined 2D element: define it or correct the surface')
+              return
+            end if
+            s_par = ds%side(m)
+            loc = side_nodes(mesh%etype(e_par), s_par)
+            k = map_get(side_map, pair_key(mesh%conn(loc(1), e_par), mesh%conn(loc(2), e_par)))
+          else
+            ! given by nodes (Gmsh line element)
+            do k = 1, 3
+              ends(k) = 0
+              if (ds%node(k, m) == 0) cycle
+              prev = map_get(node_map, int(ds%node(k, m), i8))
+              if (prev == 0) then
+                call raise_error(err, EXIT_INPUT, at // ': edge references node ' // str(ds%node(k, m)) // &
+                  ', which is not defined in $Nodes: re-export the mesh')
+                return
+              end if
+              ends(k) = new_node(prev)
+            end do
+            k = 0
+            if (ends(1) /= 0 .and. ends(2) /= 0) k = map_get(side_map, pair_key(ends(1), ends(2)))
+            if (k == 0) then
+              call raise_error(err, EXIT_INPUT, at // ': edge ' // str(ds%node(1, m)) // '-' // &
+                str(ds%node(2, m)) // ' is not a side of any Q4/Q8 element: ' // hint(d, 'stray_edge'))
+              return
+            end if
+          end if
+          e_par = (k - 1)/4 + 1
+          s_par = k - 4*(e_par - 1)
+          loc = side_nodes(mesh%etype(e_par), s_par)
+          surf%edge(1:2, m) = mesh%conn(loc(1:2), e_par)
+          surf%edge(3, m) = 0
+          if (loc(3) > 0) surf%edge(3, m) = mesh%conn(loc(3), e_par)
+          if (ds%elem(m) == 0 .and. ends(3) /= 0 .and. surf%edge(3, m) /= 0 .and. ends(3) /= surf%edge(3, m)) then
+            call raise_error(err, EXIT_INPUT, at // ': the mid node ' // str(ds%node(3, m)) // &
+              ' of edge ' // str(ds%node(1, m)) // '-' // str(ds%node(2, m)) // &
+              ' is not the mid-side node of element ' // str(mesh%elem_id(e_par)) // &
+              ': the curve and the surface do not share their nodes; re-export the mesh')
+            return
+          end if
+          if (surf%edge(3, m) /= 0) nen_max = 3
+          if (shared(k)) then
+            surf%elem(m) = -1     ! interior curve: no single parent, no outward side
+            surf%side(m) = 0
+          else
+            surf%elem(m) = e_par
+            surf%side(m) = s_par
+          end if
+        end do
+        surf%nen_edge = nen_max
+        if (ds%n > 0 .and. count(surf%elem(1:ds%n) == -1) > 0) call log_info(caller, 'surface "' // &
+          ds%name // '" has ' // str(count(surf%elem(1:ds%n) == -1)) // &
+          ' edge(s) inside the mesh (shared by two elements): usable as a node set only')
+        ! the node set of the same name
+        allocate(nodes(3*ds%n))
+        k = 0
+        do m = 1, ds%n
+          do s = 1, 3
+            if (surf%edge(s, m) == 0) cycle
+            k = k + 1
+            nodes(k) = surf%edge(s, m)
+          end do
+        end do
+        call merge_node_set(mesh, ds%name, d%format_name == 'abaqus', nodes(1:k))
+        deallocate(nodes)
+      end associate
+    end do
+  end subroutine build_surfaces
+
+  !> Add nodes to the node set called name, creating it when absent.
+  subroutine merge_node_set(mesh, name, ignore_case, nodes)
+    type(mesh_t), intent(inout) :: mesh
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: ignore_case
+    integer, intent(in) :: nodes(:)
+    type(node_set_t), allocatable :: tmp(:)
+    integer, allocatable :: list(:)
+    integer :: k, s, n
+    s = 0
+    do k = 1, size(mesh%nsets)
+      if (ignore_case) then
+        if (lower(mesh%nsets(k)%name) == lower(name)) s = k
+      else
+        if (mesh%nsets(k)%name == name) s = k
+      end if
+      if (s > 0) exit
+    end do
+    if (s == 0) then
+      allocate(tmp(size(mesh%nsets) + 1))
+      tmp(1:size(mesh%nsets)) = mesh%nsets
+      call move_alloc(tmp, mesh%nsets)
+      s = size(mesh%nsets)
+      mesh%nsets(s)%name = name
+      allocate(mesh%nsets(s)%nodes(0))
+    end if
+    list = [mesh%nsets(s)%nodes, nodes]
+    call sort_unique(list, n)
+    mesh%nsets(s)%nodes = list(1:n)
+  end subroutine merge_node_set
+
+  !> Sort a(:) ascending in place (heap sort, O(n log n)) and move the
+  !> distinct values to a(1:n).
+  pure subroutine sort_unique(a, n)
+    integer, intent(inout) :: a(:)
+    integer, intent(out) :: n
+    integer :: k, last, t
+    do k = size(a)/2, 1, -1
+      call sift_down(a, k, size(a))
+    end do
+    do last = size(a), 2, -1
+      t = a(1)
+      a(1) = a(last)
+      a(last) = t
+      call sift_down(a, 1, last - 1)
+    end do
+    n = min(size(a), 1)
+    do k = 2, size(a)
+      if (a(k) /= a(n)) then
+        n = n + 1
+        a(n) = a(k)
+      end if
+    end do
+  end subroutine sort_unique
+
+  pure subroutine sift_down(a, start, last)
+    integer, intent(inout) :: a(:)
+    integer, intent(in) :: start, last
+    integer :: root, child, t
+    root = start
+    do while (2*root <= last)
+      child = 2*root
+      if (child < last) then
+        if (a(child + 1) > a(child)) child = child + 1
+      end if
+      if (a(root) >= a(child)) return
+      t = a(root)
+      a(root) = a(child)
+      a(child) = t
+      root = child
+    end do
+  end subroutine sift_down
+
+  !> How to fix a fault, in the words of the format the mesh came from.
+  function hint(d, what) result(s)
+    type(mesh_draft_t), intent(in) :: d
+    character(len=*), intent(in) :: what
+    character(len=:), allocatable :: s
+    logical :: gmsh
+    gmsh = d%format_name == 'gmsh'
+    select case (what)
+    case ('no_elements')
+      if (gmsh) then
+        s = 'mesh the surfaces in 2D (gmsh -2) with quadrilaterals (Recombine Surface), and put them in a ' // &
+          'Physical Surface (with physical groups, Gmsh saves only the grouped elements)'
+      else
+        s = 'define the elements with *ELEMENT, TYPE=CPE4 (or CPS4, CPE8, CPS8)'
+      end if
+    case ('unknown_node')
+      if (gmsh) then
+        s = 'the $Nodes section misses it; re-export the mesh'
+      else
+        s = 'define it in a *NODE block or correct the element'
+      end if
+    case ('clockwise')
+      if (gmsh) then
+        s = 'in Gmsh, make the surface''s curve loop counter-clockwise, or add ' // &
+          '"ReverseMesh Surface{...};" for that surface before meshing'
+      else
+        s = 'in the .inp, list the corners counter-clockwise (e.g. 1,4,3,2 instead of 1,2,3,4; ' // &
+          'for CPE8/CPS8 reorder the mid-side nodes to match)'
+      end if
+    case ('stray_edge')
+      if (gmsh) then
+        s = 'the physical curve must lie on meshed surfaces and share their nodes (put the curve in the ' // &
+          'surface''s curve loop, or use Coherence)'
+      else
+        s = 'the edge must be a side of an element'
+      end if
+    case default
+      s = ''
+    end select
+  end function hint
+end module raccord_mesh_check

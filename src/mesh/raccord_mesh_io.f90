@@ -1,0 +1,88 @@
+!> Reading a mesh file: choose the reader by format, then run the checks
+!> shared by every format (raccord_mesh_check). doc/mesh-formats.md says
+!> what is read from each format and what is refused.
+module raccord_mesh_io
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, prefix_error, EXIT_INPUT
+  use raccord_log, only: log_info
+  use raccord_strings, only: str, lower, ends_with
+  use raccord_mesh, only: mesh_t, ELEM_Q4, ELEM_Q8
+  use raccord_mesh_draft, only: mesh_draft_t
+  use raccord_gmsh_reader, only: read_gmsh
+  use raccord_abaqus_reader, only: read_abaqus
+  use raccord_mesh_check, only: finalize_mesh
+  implicit none
+  private
+
+  public :: read_mesh
+
+contains
+
+  !> Read a Gmsh (.msh, 4.1 or 2.2 ASCII) or Abaqus/CalculiX (.inp) mesh.
+  !> format: 'auto' (default: by the extension .msh / .inp), 'gmsh' or 'abaqus'.
+  !> scale: factor applied to the coordinates (default 1), e.g. 1000 for a
+  !> mesh drawn in metres and a scene in millimetres.
+  !> On failure err%code = EXIT_INPUT and the message names the file and
+  !> line (or the element / node id) and how to fix it.
+  subroutine read_mesh(path, mesh, err, format, scale)
+    character(*), intent(in) :: path
+    type(mesh_t), intent(out) :: mesh
+    type(error_t), intent(inout) :: err
+    character(*), intent(in), optional :: format
+    real(wp), intent(in), optional :: scale
+    character(len=:), allocatable :: fmt
+    type(mesh_draft_t) :: draft
+    real(wp) :: factor
+
+    if (err%failed()) return
+    mesh%source = path
+    fmt = 'auto'
+    if (present(format)) fmt = lower(trim(adjustl(format)))
+    if (len(fmt) == 0) fmt = 'auto'
+    factor = 1.0_wp
+    if (present(scale)) factor = scale
+    if (.not. (factor > 0.0_wp .and. factor <= huge(factor))) then
+      call raise_error(err, EXIT_INPUT, 'mesh scale for ' // path // ' is ' // str(factor) // &
+        ': it must be a positive finite factor')
+      return
+    end if
+
+    if (fmt == 'auto') then
+      if (ends_with(lower(path), '.msh')) then
+        fmt = 'gmsh'
+      else if (ends_with(lower(path), '.inp')) then
+        fmt = 'abaqus'
+      else
+        call raise_error(err, EXIT_INPUT, 'cannot tell the format of mesh file ' // path // &
+          ' from its extension: name it .msh (Gmsh) or .inp (Abaqus), or give format = ''gmsh'' or ''abaqus''')
+        return
+      end if
+    end if
+
+    select case (fmt)
+    case ('gmsh')
+      call read_gmsh(path, draft, err)
+    case ('abaqus')
+      call read_abaqus(path, draft, err)
+    case default
+      call raise_error(err, EXIT_INPUT, 'mesh format "' // fmt // '" is unknown: use ''auto'', ''gmsh'' or ''abaqus''')
+      return
+    end select
+    if (err%failed()) then
+      call prefix_error(err, 'reading mesh')
+      return
+    end if
+
+    call finalize_mesh(draft, mesh, err)
+    if (err%failed()) then
+      call prefix_error(err, 'checking mesh')
+      return
+    end if
+    if (factor /= 1.0_wp) mesh%x = factor*mesh%x
+
+    call log_info('read_mesh', path // ': ' // str(mesh%nnode) // ' nodes, ' // str(mesh%nelem) // &
+      ' elements (' // str(count(mesh%etype == ELEM_Q4)) // ' Q4, ' // str(count(mesh%etype == ELEM_Q8)) // &
+      ' Q8), ' // str(size(mesh%esets)) // ' element sets, ' // str(size(mesh%nsets)) // ' node sets, ' // &
+      str(size(mesh%surfaces)) // ' surfaces')
+  end subroutine read_mesh
+end module raccord_mesh_io

@@ -1,0 +1,205 @@
+!> Line-by-line reading of a text input file with the line number kept for
+!> messages, and the field splitting and number parsing the mesh readers share.
+!>
+!> Lines may be of any length (Abaqus continuation, long Gmsh entity lines)
+!> and may end in CR-LF (files written on Windows).
+module raccord_text_reader
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_strings, only: str
+  implicit none
+  private
+
+  public :: open_text_file, close_text_file, read_line, here
+  public :: split_fields, parse_int, parse_real
+
+  !> An open text file and the number of the last line read.
+  type, public :: text_file_t
+    character(len=:), allocatable :: path
+    integer :: unit = -1
+    integer :: line_no = 0
+  end type text_file_t
+
+contains
+
+  !> Open a file for reading; a missing or unreadable file is an input error.
+  subroutine open_text_file(tf, path, err)
+    type(text_file_t), intent(out) :: tf
+    character(len=*), intent(in) :: path
+    type(error_t), intent(inout) :: err
+    integer :: ios
+    character(len=512) :: msg
+    logical :: exists
+    tf%path = path
+    tf%line_no = 0
+    inquire(file=path, exist=exists)
+    if (.not. exists) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" does not exist: check the path ' // &
+        '(relative paths are taken from the scene deck''s folder)')
+      return
+    end if
+    open(newunit=tf%unit, file=path, status='old', action='read', form='formatted', &
+      access='sequential', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      tf%unit = -1
+      call raise_error(err, EXIT_INPUT, 'cannot open mesh file "' // path // '": ' // trim(msg))
+    end if
+  end subroutine open_text_file
+
+  subroutine close_text_file(tf)
+    type(text_file_t), intent(inout) :: tf
+    integer :: ios
+    if (tf%unit /= -1) close(tf%unit, iostat=ios)
+    tf%unit = -1
+  end subroutine close_text_file
+
+  !> "path:line" of the last line read, for messages.
+  function here(tf) result(s)
+    type(text_file_t), intent(in) :: tf
+    character(len=:), allocatable :: s
+    s = tf%path // ':' // str(tf%line_no)
+  end function here
+
+  !> Read the next line (without its end-of-line characters). At end of file
+  !> eof is true and line is empty; a read failure raises an input error.
+  subroutine read_line(tf, line, eof, err)
+    type(text_file_t), intent(inout) :: tf
+    character(len=:), allocatable, intent(out) :: line
+    logical, intent(out) :: eof
+    type(error_t), intent(inout) :: err
+    character(len=256) :: buf
+    character(len=512) :: msg
+    integer :: ios, nread
+    line = ''
+    eof = .false.
+    ! Non-advancing reads in chunks: a line has no length limit.
+    do
+      read(tf%unit, '(a)', advance='no', size=nread, iostat=ios, iomsg=msg) buf
+      if (ios == 0) then
+        line = line // buf(1:nread)
+        cycle
+      end if
+      if (is_iostat_eor(ios)) then
+        line = line // buf(1:nread)
+        exit
+      end if
+      if (is_iostat_end(ios)) then
+        eof = .true.
+        return
+      end if
+      call raise_error(err, EXIT_INPUT, 'cannot read ' // tf%path // ' after line ' // str(tf%line_no) // &
+        ': ' // trim(msg) // ' (is it a text file?)')
+      eof = .true.
+      return
+    end do
+    tf%line_no = tf%line_no + 1
+    if (len(line) > 0) then
+      if (line(len(line):len(line)) == achar(13)) line = line(1:len(line)-1)
+    end if
+  end subroutine read_line
+
+  !> Split a line into fields at any of the separator characters; runs of
+  !> blanks count as one separator, and fields are returned trimmed as
+  !> first/last character positions. With separators = ',' an empty field
+  !> between two commas is kept (first > last); a trailing empty one is not.
+  pure subroutine split_fields(line, separators, first, last, n)
+    character(len=*), intent(in) :: line, separators
+    integer, allocatable, intent(out) :: first(:), last(:)
+    integer, intent(out) :: n
+    integer :: k, start, stop_, cap
+    logical :: blank_sep
+    blank_sep = scan(separators, ' ') > 0
+    cap = 8
+    allocate(first(cap), last(cap))
+    n = 0
+    k = 1
+    do while (k <= len(line))
+      if (blank_sep) then
+        ! skip the blanks and tabs that separate fields
+        do while (k <= len(line))
+          if (line(k:k) /= ' ' .and. line(k:k) /= achar(9)) exit
+          k = k + 1
+        end do
+        if (k > len(line)) exit
+      end if
+      start = k
+      do while (k <= len(line))
+        if (index(separators, line(k:k)) > 0) exit
+        if (blank_sep .and. line(k:k) == achar(9)) exit
+        k = k + 1
+      end do
+      stop_ = k - 1
+      k = k + 1                      ! step over the separator
+      ! trim blanks around a comma-separated field
+      do while (start <= stop_)
+        if (line(start:start) /= ' ' .and. line(start:start) /= achar(9)) exit
+        start = start + 1
+      end do
+      do while (stop_ >= start)
+        if (line(stop_:stop_) /= ' ' .and. line(stop_:stop_) /= achar(9)) exit
+        stop_ = stop_ - 1
+      end do
+      if (n == cap) call grow_pair(first, last, cap)
+      n = n + 1
+      first(n) = start
+      last(n) = stop_
+    end do
+    ! a trailing separator does not open an empty last field
+    if (n > 0 .and. .not. blank_sep) then
+      if (first(n) > last(n) .and. len_trim(line) > 0) then
+        if (index(separators, line(len_trim(line):len_trim(line))) > 0) n = n - 1
+      end if
+    end if
+  end subroutine split_fields
+
+  pure subroutine grow_pair(first, last, cap)
+    integer, allocatable, intent(inout) :: first(:), last(:)
+    integer, intent(inout) :: cap
+    integer, allocatable :: tmp(:)
+    allocate(tmp(2*cap))
+    tmp(1:cap) = first
+    call move_alloc(tmp, first)
+    allocate(tmp(2*cap))
+    tmp(1:cap) = last
+    call move_alloc(tmp, last)
+    cap = 2*cap
+  end subroutine grow_pair
+
+  !> Parse an integer field: optional sign and digits only (list-directed
+  !> reading alone would accept "3*1" or "1/" and silently misread).
+  subroutine parse_int(text, value, ok)
+    character(len=*), intent(in) :: text
+    integer, intent(out) :: value
+    logical, intent(out) :: ok
+    integer :: k, ios, first
+    value = 0
+    ok = .false.
+    if (len(text) == 0) return
+    first = 1
+    if (text(1:1) == '-' .or. text(1:1) == '+') first = 2
+    if (first > len(text) .or. len(text) - first + 1 > 10) return
+    do k = first, len(text)
+      if (text(k:k) < '0' .or. text(k:k) > '9') return
+    end do
+    read(text, *, iostat=ios) value
+    ok = ios == 0
+  end subroutine parse_int
+
+  !> Parse a real field: digits, sign, point and exponent letters only, then
+  !> a finite value.
+  subroutine parse_real(text, value, ok)
+    character(len=*), intent(in) :: text
+    real(wp), intent(out) :: value
+    logical, intent(out) :: ok
+    integer :: ios
+    value = 0.0_wp
+    ok = .false.
+    if (len(text) == 0) return
+    if (verify(text, '0123456789+-.eEdD') /= 0) return
+    if (scan(text, '0123456789') == 0) return
+    read(text, *, iostat=ios) value
+    if (ios /= 0) return
+    ! reject overflow to infinity; a NaN cannot pass the character check
+    ok = abs(value) <= huge(value)
+  end subroutine parse_real
+end module raccord_text_reader
