@@ -76,6 +76,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: hdferr
     integer(hid_t) :: root
+    if (err%failed()) return
     if (res%is_open) then
       call raise_error(err, EXIT_INTERNAL, 'results_open: results file "' // res%part_name &
         // '" is already open; close it first')

@@ -113,7 +113,7 @@ contains
         // '" NumberOfElements="' // str(blocks(b)%nel) // '" NodesPerElement="' &
         // str(blocks(b)%nen) // '">', ios)
       call put_item(u, h5name, blocks(b)%conn_path, str(blocks(b)%nel) // ' ' // str(blocks(b)%nen), &
-        'Int', 4, ios)
+        'Int', storage_size(0)/8, ios)
       call put(u, '          </Topology>', ios)
       call put(u, '          <Geometry GeometryType="XY">', ios)
       call put_item(u, h5name, '/mesh/x', str(nnode) // ' 2', 'Float', 8, ios)
