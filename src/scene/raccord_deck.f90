@@ -1,0 +1,952 @@
+!> Scene deck reader: fills scene_t from a file of namelist groups and checks
+!> every value on its own (doc/scene-reference.md lists groups and keys).
+!>
+!> The deck is first split into groups by raccord_deck_scan, which knows the
+!> line of every group and key; each group is then read here key by key with
+!> an internal namelist read, so that a value that does not read is reported
+!> with its key and line. Every message has the form
+!>   <deck>:<line>: &<group> '<name>': <what is wrong>; <how to fix it>
+!> and comes back in error_t with code EXIT_INPUT; nothing here stops.
+!>
+!> Defaults come from the default initialization of the raccord_scene types;
+!> a required key starts at a sentinel (UNSET, or '' for text) so that a key
+!> left out is reported instead of silently taking a value.
+module raccord_deck
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use raccord_kinds, only: wp, name_len, path_len
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_strings, only: str, lower
+  use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
+  use raccord_deck_scan, only: deck_block_t, scan_deck, join_names
+  use raccord_deck_write, only: write_scene, real_text
+  use raccord_scene, only: scene_t, run_spec_t, mesh_spec_t, body_spec_t, bc_spec_t, amplitude_spec_t, &
+    time_spec_t, output_spec_t, contact_spec_t, MAX_TABLE, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, &
+    BC_PRESSURE, METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0, MULT_DUAL
+  implicit none
+  private
+
+  public :: read_scene, write_scene
+
+  !> Groups a deck may hold, and which of them may appear only once.
+  character(len=*), parameter :: GROUPS(*) = [character(len=12) :: 'run', 'mesh', 'body', 'boundary', &
+    'amplitude', 'time', 'output', 'contact_pair']
+  logical, parameter :: SINGLE(*) = [.true., .true., .false., .false., .false., .true., .true., .false.]
+
+  !> Keys of each group, in the order the documentation and the echo use.
+  character(len=*), parameter :: RUN_KEYS(*) = [character(len=16) :: 'title', 'output_dir']
+  character(len=*), parameter :: MESH_KEYS(*) = [character(len=16) :: 'file', 'format', 'scale']
+  character(len=*), parameter :: BODY_KEYS(*) = [character(len=16) :: 'name', 'elset', 'young', 'poisson', &
+    'density', 'hypothesis', 'thickness', 'velocity', 'body_force']
+  character(len=*), parameter :: BC_KEYS(*) = [character(len=16) :: 'set', 'type', 'components', 'value', &
+    'pressure', 'amplitude']
+  character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
+  character(len=*), parameter :: TIME_KEYS(*) = [character(len=16) :: 't_end', 'dt', 'safety', 'damping']
+  character(len=*), parameter :: OUTPUT_KEYS(*) = [character(len=16) :: 'frames', 'history_every', &
+    'progress_seconds', 'stress']
+  character(len=*), parameter :: CONTACT_KEYS(*) = [character(len=16) :: 'slave', 'master', 'method', &
+    'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations']
+
+  !> Keys whose value is text and so must be quoted in namelist input.
+  character(len=*), parameter :: TEXT_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file', &
+    'format', 'name', 'elset', 'hypothesis', 'set', 'type', 'components', 'amplitude', 'slave', 'master', &
+    'method', 'multiplier']
+
+  !> Sentinel of required real keys: no deck sets a real to -huge.
+  real(wp), parameter :: UNSET = -huge(1.0_wp)
+
+contains
+
+  !> Read the scene deck at path into scene. On failure err%code is
+  !> EXIT_INPUT and err%message names the file, line, group and key.
+  subroutine read_scene(path, scene, err)
+    character(len=*), intent(in) :: path
+    type(scene_t), intent(out) :: scene
+    type(error_t), intent(out) :: err
+    type(deck_block_t), allocatable :: blocks(:)
+    integer :: first(size(GROUPS)), n_of(size(GROUPS))
+    integer, allocatable :: body_blk(:), bc_blk(:), amp_blk(:)
+    integer :: k, g, nbody, nbc, namp, ncontact
+    character(len=:), allocatable :: stem
+
+    scene%path = path
+    scene%dir = absolute_path(path_dir(path))
+    stem = path_stem(path)
+
+    call scan_deck(path, GROUPS, blocks, err)
+    if (err%failed()) return
+
+    ! Which groups are there, and are the single ones single.
+    first = 0
+    n_of = 0
+    do k = 1, size(blocks)
+      g = findloc(GROUPS, blocks(k)%group, dim=1)
+      n_of(g) = n_of(g) + 1
+      if (first(g) == 0) then
+        first(g) = k
+      else if (SINGLE(g)) then
+        call raise_error(err, EXIT_INPUT, path // ':' // str(blocks(k)%line) // ': &' // trim(GROUPS(g)) // &
+          ': the group appears a second time (first at line ' // str(blocks(first(g))%line) // &
+          '); keep a single &' // trim(GROUPS(g)) // ' group')
+        return
+      end if
+    end do
+    if (n_of(group_index('mesh')) == 0) then
+      call raise_error(err, EXIT_INPUT, path // ': &mesh: the deck has no &mesh group; add one, e.g. ' // &
+        '&mesh file = ''part.msh'' /')
+    else if (n_of(group_index('time')) == 0) then
+      call raise_error(err, EXIT_INPUT, path // ': &time: the deck has no &time group; add one, e.g. ' // &
+        '&time t_end = 1.0 /')
+    else if (n_of(group_index('body')) == 0) then
+      call raise_error(err, EXIT_INPUT, path // ': &body: the deck has no &body group; add one per body, ' // &
+        'e.g. &body name = ''part'', young = 70000.0, poisson = 0.3, density = 2.7e-9 /')
+    end if
+    if (err%failed()) return
+
+    ! Groups that may be left out take their defaults.
+    scene%run%title = stem
+    scene%run%output_dir = 'results/' // stem
+    nbody = n_of(group_index('body'))
+    nbc = n_of(group_index('boundary'))
+    namp = n_of(group_index('amplitude'))
+    ncontact = n_of(group_index('contact_pair'))
+    allocate(scene%bodies(nbody), scene%bcs(nbc), scene%amplitudes(namp), scene%contacts(ncontact))
+    allocate(body_blk(nbody), bc_blk(nbc), amp_blk(namp))
+
+    nbody = 0
+    nbc = 0
+    namp = 0
+    ncontact = 0
+    do k = 1, size(blocks)
+      select case (blocks(k)%group)
+      case ('run')
+        call read_run(path, blocks(k), stem, scene%run, err)
+      case ('mesh')
+        call read_mesh(path, blocks(k), scene%dir, scene%mesh, err)
+      case ('body')
+        nbody = nbody + 1
+        body_blk(nbody) = k
+        call read_body(path, blocks(k), scene%bodies(nbody), err)
+      case ('boundary')
+        nbc = nbc + 1
+        bc_blk(nbc) = k
+        call read_boundary(path, blocks(k), scene%bcs(nbc), err)
+      case ('amplitude')
+        namp = namp + 1
+        amp_blk(namp) = k
+        call read_amplitude(path, blocks(k), scene%amplitudes(namp), err)
+      case ('time')
+        call read_time(path, blocks(k), scene%time, err)
+      case ('output')
+        call read_output(path, blocks(k), scene%output, err)
+      case ('contact_pair')
+        ncontact = ncontact + 1
+        call read_contact(path, blocks(k), scene%contacts(ncontact), err)
+      end select
+      if (err%failed()) return
+    end do
+
+    call check_references(path, blocks, scene, body_blk, bc_blk, amp_blk, err)
+  end subroutine read_scene
+
+  pure integer function group_index(name)
+    character(len=*), intent(in) :: name
+    group_index = findloc(GROUPS, name, dim=1)
+  end function group_index
+
+  !> Checks across groups: unique body and amplitude names, and every
+  !> amplitude a boundary names is defined.
+  subroutine check_references(deck, blocks, scene, body_blk, bc_blk, amp_blk, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blocks(:)
+    type(scene_t), intent(in) :: scene
+    integer, intent(in) :: body_blk(:), bc_blk(:), amp_blk(:)
+    type(error_t), intent(inout) :: err
+    integer :: i, j
+    do i = 2, size(scene%bodies)
+      do j = 1, i - 1
+        if (scene%bodies(i)%name /= scene%bodies(j)%name) cycle
+        call bad_value(deck, blocks(body_blk(i)), scene%bodies(i)%name, 'name', &
+          'the name is already used by the &body at line ' // str(blocks(body_blk(j))%line), &
+          'give each body its own name', err)
+        return
+      end do
+    end do
+    do i = 2, size(scene%amplitudes)
+      do j = 1, i - 1
+        if (scene%amplitudes(i)%name /= scene%amplitudes(j)%name) cycle
+        call bad_value(deck, blocks(amp_blk(i)), scene%amplitudes(i)%name, 'name', &
+          'the name is already used by the &amplitude at line ' // str(blocks(amp_blk(j))%line), &
+          'give each amplitude its own name', err)
+        return
+      end do
+    end do
+    do i = 1, size(scene%bcs)
+      if (len(scene%bcs(i)%amplitude) == 0) cycle
+      if (any([(scene%amplitudes(j)%name == scene%bcs(i)%amplitude, j = 1, size(scene%amplitudes))])) cycle
+      call bad_value(deck, blocks(bc_blk(i)), scene%bcs(i)%set, 'amplitude', &
+        'no &amplitude group has this name (defined: ' // amplitude_names(scene) // ')', &
+        'add &amplitude name = ''' // scene%bcs(i)%amplitude // ''', time = ..., value = ... / ' // &
+        'or correct the name (names are case-sensitive)', err)
+      return
+    end do
+  end subroutine check_references
+
+  function amplitude_names(scene) result(s)
+    type(scene_t), intent(in) :: scene
+    character(len=:), allocatable :: s
+    integer :: j
+    s = ''
+    do j = 1, size(scene%amplitudes)
+      if (j > 1) s = s // ', '
+      s = s // scene%amplitudes(j)%name
+    end do
+    if (len(s) == 0) s = 'none'
+  end function amplitude_names
+
+  ! ---------------------------------------------------------------- groups
+
+  !> &run title, output_dir.
+  subroutine read_run(deck, blk, stem, spec, err)
+    character(len=*), intent(in) :: deck, stem
+    type(deck_block_t), intent(in) :: blk
+    type(run_spec_t), intent(inout) :: spec
+    type(error_t), intent(inout) :: err
+    character(len=path_len) :: title, output_dir
+    namelist /run/ title, output_dir
+    character(len=:), allocatable :: record
+    character(len=256) :: msg
+    integer :: k, ios
+
+    title = stem
+    output_dir = ''
+    call check_keys(deck, blk, RUN_KEYS, '', err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=run, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, '', msg, err)
+        return
+      end if
+    end do
+    call check_length(deck, blk, '', 'title', title, err)
+    call check_length(deck, blk, '', 'output_dir', output_dir, err)
+    if (err%failed()) return
+    spec%title = trim(title)
+    ! Batch convention: a relative output folder is relative to the current
+    ! directory (where the job runs), not to the deck.
+    if (len_trim(output_dir) == 0) then
+      spec%output_dir = 'results/' // stem
+    else
+      spec%output_dir = trim(output_dir)
+    end if
+  end subroutine read_run
+
+  !> &mesh file, format, scale.
+  subroutine read_mesh(deck, blk, dir, spec, err)
+    character(len=*), intent(in) :: deck, dir
+    type(deck_block_t), intent(in) :: blk
+    type(mesh_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    character(len=path_len) :: file
+    character(len=name_len) :: format
+    real(wp) :: scale
+    namelist /mesh/ file, format, scale
+    character(len=:), allocatable :: record
+    character(len=256) :: msg
+    integer :: k, ios
+
+    file = ''
+    format = 'auto'
+    scale = spec%scale
+    call check_keys(deck, blk, MESH_KEYS, '', err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=mesh, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, '', msg, err)
+        return
+      end if
+    end do
+    call check_length(deck, blk, '', 'file', file, err)
+    call check_finite(deck, blk, '', ['scale'], [scale], err)
+    if (err%failed()) return
+
+    if (len_trim(file) == 0) then
+      call missing_key(deck, blk, '', 'file', 'file = ''part.msh'' (a path relative to the deck''s folder)', err)
+      return
+    end if
+    format = lower(format)
+    select case (format)
+    case ('auto', 'gmsh', 'abaqus')
+    case default
+      call bad_value(deck, blk, '', 'format', 'unknown mesh format', &
+        'use ''auto'' (from the file extension), ''gmsh'' or ''abaqus''', err)
+      return
+    end select
+    if (.not. (scale > 0.0_wp)) then
+      call bad_value(deck, blk, '', 'scale', 'the scale factor must be > 0', &
+        'give the factor from mesh units to deck units, e.g. scale = 1.0e3 for a mesh in m and a deck in mm', err)
+      return
+    end if
+    ! The mesh lives with the deck: a relative path is resolved against the
+    ! deck's folder, so the deck can be run from anywhere.
+    spec%file = path_join(dir, trim(file))
+    spec%format = trim(format)
+    spec%scale = scale
+  end subroutine read_mesh
+
+  !> &body name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force.
+  subroutine read_body(deck, blk, spec, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blk
+    type(body_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    character(len=name_len) :: name, elset, hypothesis
+    real(wp) :: young, poisson, density, thickness, velocity(2), body_force(2)
+    namelist /body/ name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force
+    character(len=:), allocatable :: record, label
+    character(len=256) :: msg
+    integer :: k, ios
+
+    name = ''
+    elset = ''
+    young = UNSET
+    poisson = UNSET
+    density = UNSET
+    hypothesis = 'plane_strain'
+    thickness = spec%thickness
+    velocity = spec%velocity
+    body_force = spec%body_force
+
+    ! The body's name labels every message, so read it first.
+    k = blk%find('name')
+    if (k > 0) then
+      record = blk%item(k)
+      read(record, nml=body, iostat=ios, iomsg=msg)
+    end if
+    label = trim(name)
+    call check_keys(deck, blk, BODY_KEYS, label, err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=body, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, label, msg, err)
+        return
+      end if
+    end do
+    call check_length(deck, blk, label, 'name', name, err)
+    call check_length(deck, blk, label, 'elset', elset, err)
+    call check_finite(deck, blk, label, [character(len=10) :: 'young', 'poisson', 'density', 'thickness', &
+      'velocity', 'velocity', 'body_force', 'body_force'], &
+      [young, poisson, density, thickness, velocity, body_force], err)
+    if (err%failed()) return
+
+    if (len_trim(name) == 0) then
+      call missing_key(deck, blk, label, 'name', 'name = ''part'' (used in messages and results)', err)
+    else if (young == UNSET) then
+      call missing_key(deck, blk, label, 'young', 'young = <Young''s modulus>, e.g. 70000.0 (MPa)', err)
+    else if (poisson == UNSET) then
+      call missing_key(deck, blk, label, 'poisson', 'poisson = <Poisson''s ratio>, e.g. 0.3', err)
+    else if (density == UNSET) then
+      call missing_key(deck, blk, label, 'density', 'density = <mass density>, e.g. 2.7e-9 (t/mm^3)', err)
+    else if (.not. (young > 0.0_wp)) then
+      call bad_value(deck, blk, label, 'young', 'Young''s modulus must be > 0', &
+        'give it in stress units, e.g. young = 70000.0 (MPa)', err)
+    else if (.not. (poisson > -1.0_wp .and. poisson < 0.5_wp)) then
+      call bad_value(deck, blk, label, 'poisson', 'Poisson''s ratio must lie in (-1, 0.5)', &
+        'use e.g. poisson = 0.3 (0.5 would be incompressible, which this element cannot represent)', err)
+    else if (.not. (density > 0.0_wp)) then
+      call bad_value(deck, blk, label, 'density', 'the density must be > 0', &
+        'give it in mass/length^3, e.g. density = 2.7e-9 (t/mm^3)', err)
+    else if (.not. (thickness > 0.0_wp)) then
+      call bad_value(deck, blk, label, 'thickness', 'the thickness must be > 0', &
+        'give the out-of-plane thickness, e.g. thickness = 1.0', err)
+    end if
+    if (err%failed()) return
+    hypothesis = lower(hypothesis)
+    select case (hypothesis)
+    case ('plane_strain')
+      spec%plane_stress = .false.
+    case ('plane_stress')
+      spec%plane_stress = .true.
+    case default
+      call bad_value(deck, blk, label, 'hypothesis', 'unknown hypothesis', &
+        'use ''plane_strain'' or ''plane_stress''', err)
+      return
+    end select
+
+    spec%name = trim(name)
+    ! The element set defaults to the body's name (one physical group per body).
+    if (len_trim(elset) == 0) then
+      spec%elset = spec%name
+    else
+      spec%elset = trim(elset)
+    end if
+    spec%young = young
+    spec%poisson = poisson
+    spec%density = density
+    spec%thickness = thickness
+    spec%velocity = velocity
+    spec%body_force = body_force
+  end subroutine read_body
+
+  !> &boundary set, type, components, value, pressure, amplitude.
+  subroutine read_boundary(deck, blk, spec, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blk
+    type(bc_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    character(len=name_len) :: set, type, components, amplitude
+    real(wp) :: value(2), pressure
+    namelist /boundary/ set, type, components, value, pressure, amplitude
+    character(len=:), allocatable :: record, label
+    character(len=16), allocatable :: applies(:)
+    character(len=256) :: msg
+    integer :: k, ios
+
+    set = ''
+    type = ''
+    components = ''
+    value = UNSET
+    pressure = UNSET
+    amplitude = ''
+
+    k = blk%find('set')
+    if (k > 0) then
+      record = blk%item(k)
+      read(record, nml=boundary, iostat=ios, iomsg=msg)
+    end if
+    label = trim(set)
+    call check_keys(deck, blk, BC_KEYS, label, err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=boundary, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, label, msg, err)
+        return
+      end if
+    end do
+    call check_length(deck, blk, label, 'set', set, err)
+    call check_length(deck, blk, label, 'amplitude', amplitude, err)
+    call check_finite(deck, blk, label, [character(len=8) :: 'value', 'value', 'pressure'], &
+      [value, pressure], err)
+    if (err%failed()) return
+
+    if (len_trim(set) == 0) then
+      call missing_key(deck, blk, label, 'set', 'set = ''<node set or surface of the mesh>''', err)
+      return
+    end if
+    if (len_trim(type) == 0) then
+      call missing_key(deck, blk, label, 'type', 'type = ''fixed'', ''displacement'', ''traction'' or ''pressure''', err)
+      return
+    end if
+
+    ! Each type uses only some keys; a key of another type is refused rather
+    ! than ignored, since type = 'fixed' with a value usually means the user
+    ! wanted an imposed displacement.
+    select case (lower(type))
+    case ('fixed')
+      spec%kind = BC_FIXED
+      applies = [character(len=16) :: 'set', 'type', 'components']
+      if (len_trim(components) == 0) components = 'xy'
+    case ('displacement')
+      spec%kind = BC_DISPLACEMENT
+      applies = [character(len=16) :: 'set', 'type', 'components', 'value', 'amplitude']
+    case ('traction')
+      spec%kind = BC_TRACTION
+      applies = [character(len=16) :: 'set', 'type', 'value', 'amplitude']
+    case ('pressure')
+      spec%kind = BC_PRESSURE
+      applies = [character(len=16) :: 'set', 'type', 'pressure', 'amplitude']
+    case default
+      call bad_value(deck, blk, label, 'type', 'unknown boundary condition type', &
+        'use ''fixed'', ''displacement'', ''traction'' or ''pressure''', err)
+      return
+    end select
+    do k = 1, size(blk%keys)
+      if (any(applies == blk%keys(k)%name)) cycle
+      call bad_value(deck, blk, label, blk%keys(k)%name, 'the key does not apply to type ''' // &
+        trim(lower(type)) // '''', 'remove it (keys of this type: ' // join_names(applies) // ')', err)
+      return
+    end do
+
+    if (spec%kind == BC_FIXED .or. spec%kind == BC_DISPLACEMENT) then
+      if (len_trim(components) == 0) then
+        call missing_key(deck, blk, label, 'components', 'components = ''xy'', ''x'' or ''y''', err)
+        return
+      end if
+      select case (lower(components))
+      case ('xy')
+        spec%comp = [.true., .true.]
+      case ('x')
+        spec%comp = [.true., .false.]
+      case ('y')
+        spec%comp = [.false., .true.]
+      case default
+        call bad_value(deck, blk, label, 'components', 'unknown components', &
+          'use ''xy'', ''x'' or ''y''', err)
+        return
+      end select
+    end if
+
+    select case (spec%kind)
+    case (BC_DISPLACEMENT)
+      ! value is always the (x, y) pair; only the listed components need one.
+      if (any(spec%comp .and. value == UNSET)) then
+        call missing_key(deck, blk, label, 'value', 'value = <ux>, <uy> (give a number for each listed component)', err)
+        return
+      end if
+      where (.not. spec%comp .or. value == UNSET) value = 0.0_wp
+      spec%value = value
+    case (BC_TRACTION)
+      if (any(value == UNSET)) then
+        call missing_key(deck, blk, label, 'value', 'value = <tx>, <ty> (the traction vector, stress units)', err)
+        return
+      end if
+      spec%value = value
+    case (BC_PRESSURE)
+      if (pressure == UNSET) then
+        call missing_key(deck, blk, label, 'pressure', 'pressure = <p> (stress units, positive pushes inward)', err)
+        return
+      end if
+      spec%pressure = pressure
+    end select
+
+    spec%set = trim(set)
+    spec%amplitude = trim(amplitude)
+  end subroutine read_boundary
+
+  !> &amplitude name, time, value.
+  subroutine read_amplitude(deck, blk, spec, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blk
+    type(amplitude_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    character(len=name_len) :: name
+    real(wp) :: time(MAX_TABLE), value(MAX_TABLE)
+    namelist /amplitude/ name, time, value
+    character(len=:), allocatable :: record, label
+    character(len=5), allocatable :: table_keys(:)
+    character(len=256) :: msg
+    integer :: k, ios, nt, nv
+
+    name = ''
+    time = UNSET
+    value = UNSET
+
+    k = blk%find('name')
+    if (k > 0) then
+      record = blk%item(k)
+      read(record, nml=amplitude, iostat=ios, iomsg=msg)
+    end if
+    label = trim(name)
+    call check_keys(deck, blk, AMP_KEYS, label, err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=amplitude, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, label, msg, err)
+        return
+      end if
+    end do
+    call check_length(deck, blk, label, 'name', name, err)
+    if (err%failed()) return
+    if (len_trim(name) == 0) then
+      call missing_key(deck, blk, label, 'name', 'name = ''<amplitude name>'' (boundaries refer to it)', err)
+      return
+    end if
+    nt = table_length(deck, blk, label, 'time', time, err)
+    nv = table_length(deck, blk, label, 'value', value, err)
+    if (err%failed()) return
+    ! Key names built by hand: gfortran 12 overruns a typed character array
+    ! constructor with implied-do loops over literals of different lengths.
+    allocate(table_keys(nt + nv))
+    table_keys(1:nt) = 'time'
+    table_keys(nt+1:) = 'value'
+    call check_finite(deck, blk, label, table_keys, [time(1:nt), value(1:nv)], err)
+    if (err%failed()) return
+    if (nt == 0) then
+      call missing_key(deck, blk, label, 'time', 'time = t1, t2, ... (at least one point)', err)
+      return
+    end if
+    if (nv == 0) then
+      call missing_key(deck, blk, label, 'value', 'value = a1, a2, ... (one per time)', err)
+      return
+    end if
+    if (nt /= nv) then
+      call bad_value(deck, blk, label, 'value', 'time has ' // str(nt) // ' points but value has ' // str(nv), &
+        'give one value per time', err)
+      return
+    end if
+    do k = 2, nt
+      if (time(k) > time(k-1)) cycle
+      call bad_value(deck, blk, label, 'time', 'the times are not strictly increasing (point ' // str(k) // &
+        ': ' // real_text(time(k)) // ' after ' // real_text(time(k-1)) // ')', 'list the times in increasing order', err)
+      return
+    end do
+    spec%name = trim(name)
+    spec%npoint = nt
+    spec%t = time(1:nt)
+    spec%a = value(1:nt)
+  end subroutine read_amplitude
+
+  !> Number of entries given in a table key; the entries must be contiguous
+  !> from the first (a gap would leave a sentinel inside the table).
+  integer function table_length(deck, blk, label, key, table, err) result(n)
+    character(len=*), intent(in) :: deck, label, key
+    type(deck_block_t), intent(in) :: blk
+    real(wp), intent(in) :: table(:)
+    type(error_t), intent(inout) :: err
+    integer :: k
+    n = 0
+    do k = size(table), 1, -1
+      if (table(k) /= UNSET) then
+        n = k
+        exit
+      end if
+    end do
+    do k = 1, n
+      if (table(k) /= UNSET) cycle
+      call bad_value(deck, blk, label, key, 'entry ' // str(k) // ' is not given but entry ' // str(n) // ' is', &
+        'give every entry from the first, e.g. ' // key // ' = 0.0, 1.0, 2.0', err)
+      return
+    end do
+  end function table_length
+
+  !> &time t_end, dt, safety, damping.
+  subroutine read_time(deck, blk, spec, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blk
+    type(time_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    real(wp) :: t_end, dt, safety, damping
+    namelist /time/ t_end, dt, safety, damping
+    character(len=:), allocatable :: record
+    character(len=256) :: msg
+    integer :: k, ios
+
+    t_end = UNSET
+    dt = spec%dt
+    safety = spec%safety
+    damping = spec%damping
+    call check_keys(deck, blk, TIME_KEYS, '', err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=time, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, '', msg, err)
+        return
+      end if
+    end do
+    call check_finite(deck, blk, '', [character(len=8) :: 't_end', 'dt', 'safety', 'damping'], &
+      [t_end, dt, safety, damping], err)
+    if (err%failed()) return
+
+    if (t_end == UNSET) then
+      call missing_key(deck, blk, '', 't_end', 't_end = <end time> (> 0)', err)
+    else if (.not. (t_end > 0.0_wp)) then
+      call bad_value(deck, blk, '', 't_end', 'the end time must be > 0', 'give the duration of the run', err)
+    else if (.not. (dt >= 0.0_wp)) then
+      call bad_value(deck, blk, '', 'dt', 'the time step must be >= 0', &
+        'give a fixed step, or dt = 0 for safety times the stable step', err)
+    else if (.not. (safety > 0.0_wp .and. safety <= 1.0_wp)) then
+      call bad_value(deck, blk, '', 'safety', 'the safety factor must lie in (0, 1]', &
+        'use e.g. safety = 0.9 (above 1 the explicit scheme is unstable)', err)
+    else if (.not. (damping >= 0.0_wp)) then
+      call bad_value(deck, blk, '', 'damping', 'the damping must be >= 0', &
+        'give a mass-proportional damping alpha in 1/time, or 0 for none', err)
+    end if
+    if (err%failed()) return
+    spec%t_end = t_end
+    spec%dt = dt
+    spec%safety = safety
+    spec%damping = damping
+  end subroutine read_time
+
+  !> &output frames, history_every, progress_seconds, stress.
+  subroutine read_output(deck, blk, spec, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blk
+    type(output_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    integer :: frames, history_every
+    real(wp) :: progress_seconds
+    logical :: stress
+    namelist /output/ frames, history_every, progress_seconds, stress
+    character(len=:), allocatable :: record
+    character(len=256) :: msg
+    integer :: k, ios
+
+    frames = spec%frames
+    history_every = spec%history_every
+    progress_seconds = spec%progress_seconds
+    stress = spec%stress
+    call check_keys(deck, blk, OUTPUT_KEYS, '', err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=output, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, '', msg, err)
+        return
+      end if
+    end do
+    call check_finite(deck, blk, '', ['progress_seconds'], [progress_seconds], err)
+    if (err%failed()) return
+
+    if (frames < 0) then
+      call bad_value(deck, blk, '', 'frames', 'the number of frames must be >= 0', &
+        'give how many result frames to write over the run (0 = the initial state only)', err)
+    else if (history_every < 0) then
+      call bad_value(deck, blk, '', 'history_every', 'the history interval must be >= 0', &
+        'give the number of steps between history lines, or 0 for about 1000 lines', err)
+    else if (.not. (progress_seconds >= 0.0_wp)) then
+      call bad_value(deck, blk, '', 'progress_seconds', 'the progress interval must be >= 0', &
+        'give the wall-clock seconds between progress lines', err)
+    end if
+    if (err%failed()) return
+    spec%frames = frames
+    spec%history_every = history_every
+    spec%progress_seconds = progress_seconds
+    spec%stress = stress
+  end subroutine read_output
+
+  !> &contact_pair slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations.
+  subroutine read_contact(deck, blk, spec, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blk
+    type(contact_spec_t), intent(out) :: spec
+    type(error_t), intent(inout) :: err
+    character(len=name_len) :: slave, master, method, multiplier
+    real(wp) :: friction, search_distance, tolerance
+    integer :: max_iterations
+    namelist /contact_pair/ slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations
+    character(len=:), allocatable :: record, label
+    character(len=256) :: msg
+    integer :: k, ios
+
+    slave = ''
+    master = ''
+    method = 'node_to_segment'
+    multiplier = 'P1'
+    friction = spec%friction
+    search_distance = spec%search_distance
+    tolerance = spec%tolerance
+    max_iterations = spec%max_iterations
+
+    ! The pair is labelled 'slave/master' in messages.
+    do k = 1, size(blk%keys)
+      if (blk%keys(k)%name /= 'slave' .and. blk%keys(k)%name /= 'master') cycle
+      record = blk%item(k)
+      read(record, nml=contact_pair, iostat=ios, iomsg=msg)
+    end do
+    label = trim(slave) // '/' // trim(master)
+    call check_keys(deck, blk, CONTACT_KEYS, label, err)
+    if (err%failed()) return
+    do k = 1, size(blk%keys)
+      record = blk%item(k)
+      msg = ''
+      read(record, nml=contact_pair, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call unreadable(deck, blk, k, label, msg, err)
+        return
+      end if
+    end do
+    call check_length(deck, blk, label, 'slave', slave, err)
+    call check_length(deck, blk, label, 'master', master, err)
+    call check_finite(deck, blk, label, [character(len=16) :: 'friction', 'search_distance', 'tolerance'], &
+      [friction, search_distance, tolerance], err)
+    if (err%failed()) return
+
+    if (len_trim(slave) == 0) then
+      call missing_key(deck, blk, label, 'slave', 'slave = ''<surface of the mesh>''', err)
+    else if (len_trim(master) == 0) then
+      call missing_key(deck, blk, label, 'master', 'master = ''<surface of the mesh>''', err)
+    else if (slave == master) then
+      call bad_value(deck, blk, label, 'master', 'slave and master are the same surface', &
+        'a pair needs two different surfaces (self-contact is not supported)', err)
+    else if (.not. (friction >= 0.0_wp)) then
+      call bad_value(deck, blk, label, 'friction', 'the friction coefficient must be >= 0', &
+        'give the Coulomb coefficient, or friction = 0 for frictionless contact', err)
+    else if (.not. (search_distance >= 0.0_wp)) then
+      call bad_value(deck, blk, label, 'search_distance', 'the search distance must be >= 0', &
+        'give a length, or search_distance = 0 for automatic', err)
+    else if (.not. (tolerance > 0.0_wp)) then
+      call bad_value(deck, blk, label, 'tolerance', 'the solver tolerance must be > 0', &
+        'use e.g. tolerance = 1e-10', err)
+    else if (max_iterations < 1) then
+      call bad_value(deck, blk, label, 'max_iterations', 'the iteration cap must be >= 1', &
+        'use e.g. max_iterations = 200', err)
+    end if
+    if (err%failed()) return
+
+    select case (lower(method))
+    case ('node_to_segment')
+      spec%method = METHOD_NTS
+    case ('mortar')
+      spec%method = METHOD_MORTAR
+    case default
+      call bad_value(deck, blk, label, 'method', 'unknown contact method', &
+        'use ''node_to_segment'' or ''mortar''', err)
+      return
+    end select
+    select case (lower(multiplier))
+    case ('p1')
+      spec%multiplier = MULT_P1
+    case ('p0')
+      spec%multiplier = MULT_P0
+    case ('dual')
+      spec%multiplier = MULT_DUAL
+    case default
+      call bad_value(deck, blk, label, 'multiplier', 'unknown multiplier space', &
+        'use ''P1'', ''P0'' or ''dual''', err)
+      return
+    end select
+    spec%slave = trim(slave)
+    spec%master = trim(master)
+    spec%friction = friction
+    spec%search_distance = search_distance
+    spec%tolerance = tolerance
+    spec%max_iterations = max_iterations
+  end subroutine read_contact
+
+  ! ---------------------------------------------------------------- messages
+
+  !> "<deck>:<line>: &<group> '<label>'", the head of every message on a group.
+  pure function head(deck, blk, line, label) result(s)
+    character(len=*), intent(in) :: deck, label
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: line
+    character(len=:), allocatable :: s
+    s = deck // ':' // str(line) // ': &' // blk%group
+    if (len(label) > 0) s = s // ' ''' // label // ''''
+  end function head
+
+  !> Keys are the group's own, text is quoted, and a key is not given twice.
+  subroutine check_keys(deck, blk, known, label, err)
+    character(len=*), intent(in) :: deck, label
+    type(deck_block_t), intent(in) :: blk
+    character(len=*), intent(in) :: known(:)
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: value
+    integer :: k, j
+    do k = 1, size(blk%keys)
+      associate (key => blk%keys(k))
+        if (.not. any(known == key%name)) then
+          call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': unknown key ''' // &
+            key%name // ''' (known keys: ' // join_names(known) // '); check the spelling')
+          return
+        end if
+        if (any(TEXT_KEYS == key%name)) then
+          value = blk%value_text(k)
+          if (value(1:1) /= '''' .and. value(1:1) /= '"') then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''' = ' // value // ': text must be in quotes; write ' // key%name // ' = ''' // value // '''')
+            return
+          end if
+        end if
+        if (.not. key%subscripted) then
+          do j = 1, k - 1
+            if (blk%keys(j)%name /= key%name .or. blk%keys(j)%subscripted) cycle
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''' is given a second time (first at line ' // str(blk%keys(j)%line) // '); keep one')
+            return
+          end do
+        end if
+      end associate
+    end do
+  end subroutine check_keys
+
+  !> The values of key k did not read as the key's type.
+  subroutine unreadable(deck, blk, k, label, iomsg, err)
+    character(len=*), intent(in) :: deck, label, iomsg
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    type(error_t), intent(inout) :: err
+    call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
+      blk%keys(k)%name // ''' = ' // blk%value_text(k) // ': cannot read the value (' // trim(iomsg) // &
+      '); give ' // expected_form(blk%group, blk%keys(k)%name))
+  end subroutine unreadable
+
+  !> What a key's value looks like, for messages.
+  pure function expected_form(group, key) result(s)
+    character(len=*), intent(in) :: group, key
+    character(len=:), allocatable :: s
+    if (any(TEXT_KEYS == key)) then
+      s = 'text in quotes, e.g. ' // key // ' = ''...'''
+    else if (group == 'amplitude') then
+      s = 'a list of 1 to ' // str(MAX_TABLE) // ' real numbers, e.g. ' // key // ' = 0.0, 1.0'
+    else if (key == 'velocity' .or. key == 'body_force' .or. key == 'value') then
+      s = 'two real numbers (x, y), e.g. ' // key // ' = 0.0, -1.0'
+    else if (key == 'frames' .or. key == 'history_every' .or. key == 'max_iterations') then
+      s = 'a whole number, e.g. ' // key // ' = 20'
+    else if (key == 'stress') then
+      s = '.true. or .false.'
+    else
+      s = 'a real number, e.g. ' // key // ' = 1.0'
+    end if
+  end function expected_form
+
+  !> A key's value is out of its range or not one of the allowed words.
+  subroutine bad_value(deck, blk, label, key, problem, fix, err)
+    character(len=*), intent(in) :: deck, label, key, problem, fix
+    type(deck_block_t), intent(in) :: blk
+    type(error_t), intent(inout) :: err
+    integer :: k
+    character(len=:), allocatable :: given
+    k = blk%find(key)
+    given = ''
+    if (k > 0) given = ' = ' // blk%value_text(k)
+    call raise_error(err, EXIT_INPUT, head(deck, blk, blk%key_line(key), label) // ': key ''' // key // '''' // &
+      given // ': ' // problem // '; ' // fix)
+  end subroutine bad_value
+
+  !> A required key is absent (reported at the line where the group starts).
+  subroutine missing_key(deck, blk, label, key, example, err)
+    character(len=*), intent(in) :: deck, label, key, example
+    type(deck_block_t), intent(in) :: blk
+    type(error_t), intent(inout) :: err
+    call raise_error(err, EXIT_INPUT, head(deck, blk, blk%line, label) // ': required key ''' // key // &
+      ''' is missing; add ' // example)
+  end subroutine missing_key
+
+  !> A text value that fills its whole buffer was probably cut short.
+  subroutine check_length(deck, blk, label, key, value, err)
+    character(len=*), intent(in) :: deck, label, key, value
+    type(deck_block_t), intent(in) :: blk
+    type(error_t), intent(inout) :: err
+    if (len_trim(value) < len(value)) return
+    call bad_value(deck, blk, label, key, 'the text is too long (at most ' // str(len(value) - 1) // &
+      ' characters)', 'shorten it', err)
+  end subroutine check_length
+
+  !> NaN or infinity would pass or fail range checks by accident (and trap
+  !> in debug builds), so they are refused first.
+  subroutine check_finite(deck, blk, label, keys, values, err)
+    character(len=*), intent(in) :: deck, label
+    type(deck_block_t), intent(in) :: blk
+    character(len=*), intent(in) :: keys(:)
+    real(wp), intent(in) :: values(:)
+    type(error_t), intent(inout) :: err
+    integer :: k
+    do k = 1, size(values)
+      if (ieee_is_finite(values(k))) cycle
+      call bad_value(deck, blk, label, trim(keys(k)), 'the value is not a finite number', &
+        'give a finite real number', err)
+      return
+    end do
+  end subroutine check_finite
+end module raccord_deck

@@ -1,0 +1,435 @@
+!> Scanner for scene decks: splits a file of namelist groups into blocks,
+!> one per group, and finds the keys of each block with their line numbers.
+!>
+!> Why not let the namelist read do it: gfortran's namelist errors name
+!> neither the line nor the key, and a namelist read on a file stops at the
+!> first group of the expected name, so unknown groups or keys and a missing
+!> '/' would pass unseen or give a cryptic message. The scanner knows the
+!> syntax well enough to report those with the file, line, group and key;
+!> raccord_deck then reads each key's values with an internal namelist read.
+!>
+!> Syntax handled: '&name' opens a group, '/' closes it; text in '...' or
+!> "..." (a doubled quote stands for itself) is opaque, so '/', '!' and '='
+!> inside quotes are data; '!' outside quotes starts a comment to the end of
+!> the line; a key is a name, optionally subscripted, followed by '='.
+module raccord_deck_scan
+  use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_strings, only: str, lower
+  implicit none
+  private
+
+  public :: scan_deck, is_name_char, join_names
+
+  !> One key = value item of a block.
+  type, public :: deck_key_t
+    character(len=:), allocatable :: name       !< lower case, without subscript
+    integer :: line = 0                         !< line of the key in the deck
+    integer :: first = 0                        !< position of the key in the block text
+    integer :: last = 0                         !< last position of its values
+    integer :: value_first = 0                  !< first position after '='
+    logical :: subscripted = .false.            !< key(i) or key(i:j)
+  end type deck_key_t
+
+  !> One group of the deck.
+  type, public :: deck_block_t
+    character(len=:), allocatable :: group      !< lower case, without '&'
+    integer :: line = 0                         !< line of '&group'
+    character(len=:), allocatable :: text       !< the group's body, comments blanked, lines joined by a blank
+    character(len=:), allocatable :: mask       !< text with quoted characters replaced by 'x'
+    integer, allocatable :: line_of(:)          !< deck line of each character of text
+    type(deck_key_t), allocatable :: keys(:)
+  contains
+    procedure :: find => block_find
+    procedure :: item => block_item
+    procedure :: value_text => block_value_text
+    procedure :: key_line => block_key_line
+  end type deck_block_t
+
+contains
+
+  !> Index of the first key called name in the block, 0 when absent.
+  pure integer function block_find(self, name) result(k)
+    class(deck_block_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    do k = 1, size(self%keys)
+      if (self%keys(k)%name == name) return
+    end do
+    k = 0
+  end function block_find
+
+  !> The k-th item as its own namelist record, "&group key = values /",
+  !> ready for an internal namelist read.
+  pure function block_item(self, k) result(record)
+    class(deck_block_t), intent(in) :: self
+    integer, intent(in) :: k
+    character(len=:), allocatable :: record
+    record = '&' // self%group // ' ' // trim(self%text(self%keys(k)%first:self%keys(k)%last)) // ' /'
+  end function block_item
+
+  !> The values of the k-th item as written (for messages).
+  pure function block_value_text(self, k) result(text)
+    class(deck_block_t), intent(in) :: self
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    integer :: n
+    text = trim(adjustl(self%text(self%keys(k)%value_first:self%keys(k)%last)))
+    ! A trailing separator is not part of the value.
+    n = len(text)
+    if (n > 0) then
+      if (text(n:n) == ',') text = trim(text(1:n-1))
+    end if
+  end function block_value_text
+
+  !> Line of the first key called name, or of the group when the key is absent
+  !> (a missing required key is reported where its group starts).
+  pure integer function block_key_line(self, name) result(line)
+    class(deck_block_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer :: k
+    k = self%find(name)
+    if (k > 0) then
+      line = self%keys(k)%line
+    else
+      line = self%line
+    end if
+  end function block_key_line
+
+  pure logical function is_name_char(c)
+    character(len=1), intent(in) :: c
+    is_name_char = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') &
+      .or. (c >= '0' .and. c <= '9') .or. c == '_'
+  end function is_name_char
+
+  pure logical function is_letter(c)
+    character(len=1), intent(in) :: c
+    is_letter = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
+  end function is_letter
+
+  !> Read the deck at path and split it into blocks. Group names are checked
+  !> against known_groups here, so that an unknown group is reported at its
+  !> line before anything else is read.
+  subroutine scan_deck(path, known_groups, blocks, err)
+    character(len=*), intent(in) :: path
+    character(len=*), intent(in) :: known_groups(:)
+    type(deck_block_t), allocatable, intent(out) :: blocks(:)
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: line, seg_text, seg_mask, name
+    character(len=256) :: msg
+    character(len=1) :: c, quote
+    integer :: u, ios, lnum, i, j, nblock
+    logical :: in_group, in_quote, at_end
+    type(deck_block_t), allocatable :: grown(:)
+
+    allocate(blocks(16))
+    nblock = 0
+    msg = ''
+    open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call raise_error(err, EXIT_INPUT, path // ': cannot open the scene deck (' // trim(msg) // &
+        '); check the path and the file''s permissions')
+      return
+    end if
+
+    in_group = .false.
+    in_quote = .false.
+    quote = ''''
+    lnum = 0
+    lines: do
+      call read_line(u, line, at_end, ios, msg)
+      if (ios /= 0) then
+        call raise_error(err, EXIT_INPUT, path // ':' // str(lnum + 1) // ': cannot read the line (' // &
+          trim(msg) // '); save the deck as plain text')
+        exit lines
+      end if
+      if (at_end) exit lines
+      lnum = lnum + 1
+      ! The segment of this line that belongs to the open group, as text and mask.
+      seg_text = ''
+      seg_mask = ''
+      i = 1
+      chars: do while (i <= len(line))
+        c = line(i:i)
+        if (.not. in_group) then
+          if (c == ' ' .or. c == achar(9)) then
+            i = i + 1
+            cycle chars
+          end if
+          if (c == '!') exit chars
+          if (c /= '&') then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': text outside a group: ''' // &
+              shorten(line(i:)) // '''; put every key = value between &group and ''/'' (or comment it out with ''!'')')
+            exit lines
+          end if
+          j = i + 1
+          do while (j <= len(line))
+            if (.not. is_name_char(line(j:j))) exit
+            j = j + 1
+          end do
+          name = lower(line(i+1:j-1))
+          if (len(name) == 0) then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''&'' without a group name; ' // &
+              'write the group name right after it, e.g. &mesh')
+            exit lines
+          end if
+          if (.not. any(known_groups == name)) then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': unknown group ''&' // name // &
+              ''' (known groups: ' // join_names(known_groups) // '); check the spelling')
+            exit lines
+          end if
+          if (nblock == size(blocks)) then
+            allocate(grown(2*nblock))
+            grown(1:nblock) = blocks
+            call move_alloc(grown, blocks)
+          end if
+          nblock = nblock + 1
+          blocks(nblock)%group = name
+          blocks(nblock)%line = lnum
+          blocks(nblock)%text = ''
+          blocks(nblock)%mask = ''
+          allocate(blocks(nblock)%line_of(0))
+          in_group = .true.
+          i = j
+          cycle chars
+        end if
+
+        if (in_quote) then
+          seg_text = seg_text // c
+          if (c == quote) then
+            if (i < len(line)) then
+              if (line(i+1:i+1) == quote) then
+                ! A doubled quote is a quote character inside the string.
+                seg_text = seg_text // c
+                seg_mask = seg_mask // 'xx'
+                i = i + 2
+                cycle chars
+              end if
+            end if
+            in_quote = .false.
+            seg_mask = seg_mask // c
+          else
+            seg_mask = seg_mask // 'x'
+          end if
+          i = i + 1
+          cycle chars
+        end if
+
+        select case (c)
+        case ('!')
+          exit chars
+        case ('''', '"')
+          in_quote = .true.
+          quote = c
+          seg_text = seg_text // c
+          seg_mask = seg_mask // c
+        case ('/')
+          call append_segment(blocks(nblock), seg_text, seg_mask, lnum)
+          seg_text = ''
+          seg_mask = ''
+          in_group = .false.
+          call find_keys(path, blocks(nblock), err)
+          if (err%failed()) exit lines
+        case ('&')
+          if (i < len(line)) then
+            if (is_letter(line(i+1:i+1))) then
+              call raise_error(err, EXIT_INPUT, path // ':' // str(blocks(nblock)%line) // ': &' // &
+                blocks(nblock)%group // ': the group is not closed by ''/'' before line ' // str(lnum) // &
+                '; end the group with ''/'' on its own line')
+              exit lines
+            end if
+          end if
+          seg_text = seg_text // c
+          seg_mask = seg_mask // c
+        case (achar(9))
+          seg_text = seg_text // ' '
+          seg_mask = seg_mask // ' '
+        case default
+          seg_text = seg_text // c
+          seg_mask = seg_mask // c
+        end select
+        i = i + 1
+      end do chars
+
+      if (in_quote) then
+        call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': &' // blocks(nblock)%group // &
+          ': a string opened with ' // quote // ' is not closed on this line; close it with ' // quote // &
+          ' (write a quote inside a string twice)')
+        exit lines
+      end if
+      ! Lines are joined by a blank, so a value never runs into the next line.
+      if (in_group) call append_segment(blocks(nblock), seg_text // ' ', seg_mask // ' ', lnum)
+    end do lines
+    close(u, iostat=ios)
+
+    if (.not. err%failed() .and. in_group) then
+      call raise_error(err, EXIT_INPUT, path // ':' // str(blocks(nblock)%line) // ': &' // &
+        blocks(nblock)%group // ': the group is not closed by ''/'' before the end of the file; ' // &
+        'end the group with ''/'' on its own line')
+    end if
+    if (err%failed()) nblock = 0
+    ! Through a copy: gfortran 12 mishandles a self-assignment that shrinks
+    ! an array of types with allocatable components (blocks = blocks(1:n)).
+    allocate(grown(nblock))
+    grown(1:nblock) = blocks(1:nblock)
+    call move_alloc(grown, blocks)
+  end subroutine scan_deck
+
+  !> Read one line of any length; at_end is set at the end of the file.
+  subroutine read_line(u, line, at_end, ios, msg)
+    integer, intent(in) :: u
+    character(len=:), allocatable, intent(out) :: line
+    logical, intent(out) :: at_end
+    integer, intent(out) :: ios
+    character(len=*), intent(inout) :: msg
+    character(len=256) :: buf
+    integer :: n
+    line = ''
+    at_end = .false.
+    do
+      read(u, '(a)', advance='no', size=n, iostat=ios, iomsg=msg) buf
+      if (ios > 0) return
+      line = line // buf(1:n)
+      if (ios == iostat_eor) exit
+      if (ios == iostat_end) then
+        ! A last line without a newline still counts as a line.
+        at_end = len(line) == 0
+        ios = 0
+        if (at_end) return
+        exit
+      end if
+    end do
+    ios = 0
+    ! Decks written on Windows end their lines with CR LF.
+    n = len(line)
+    if (n > 0) then
+      if (line(n:n) == achar(13)) line = line(1:n-1)
+    end if
+  end subroutine read_line
+
+  subroutine append_segment(block, seg_text, seg_mask, lnum)
+    type(deck_block_t), intent(inout) :: block
+    character(len=*), intent(in) :: seg_text, seg_mask
+    integer, intent(in) :: lnum
+    integer :: k
+    block%text = block%text // seg_text
+    block%mask = block%mask // seg_mask
+    block%line_of = [block%line_of, (lnum, k = 1, len(seg_text))]
+  end subroutine append_segment
+
+  !> Find the keys of a closed block: each '=' outside quotes ends a key
+  !> designator "name" or "name(subscript)". The values of a key run up to
+  !> the next key, so each item can be read on its own.
+  subroutine find_keys(path, block, err)
+    character(len=*), intent(in) :: path
+    type(deck_block_t), intent(inout) :: block
+    type(error_t), intent(inout) :: err
+    type(deck_key_t) :: keys(len(block%mask))
+    character(len=:), allocatable :: here
+    integer :: p, q, s, e, depth, nkey, k
+
+    here = path // ':'
+    nkey = 0
+    do p = 1, len(block%mask)
+      if (block%mask(p:p) /= '=') cycle
+      q = p - 1
+      call skip_blanks_back(block%mask, q)
+      nkey = nkey + 1
+      keys(nkey)%subscripted = .false.
+      if (q >= 1) then
+        if (block%mask(q:q) == ')') then
+          depth = 0
+          do while (q >= 1)
+            if (block%mask(q:q) == ')') depth = depth + 1
+            if (block%mask(q:q) == '(') depth = depth - 1
+            if (depth == 0) exit
+            q = q - 1
+          end do
+          q = q - 1
+          call skip_blanks_back(block%mask, q)
+          keys(nkey)%subscripted = .true.
+        end if
+      end if
+      e = q
+      do while (q >= 1)
+        if (.not. is_name_char(block%mask(q:q))) exit
+        q = q - 1
+      end do
+      s = q + 1
+      if (s > e) then
+        call raise_error(err, EXIT_INPUT, here // str(block%line_of(p)) // ': &' // block%group // &
+          ': ''='' without a key name before it; write key = value')
+        return
+      end if
+      if (s > 1) then
+        if (block%mask(s-1:s-1) /= ' ' .and. block%mask(s-1:s-1) /= ',') then
+          call raise_error(err, EXIT_INPUT, here // str(block%line_of(s)) // ': &' // block%group // &
+            ': key ''' // lower(block%mask(s:e)) // ''' runs into the text before it (''' // &
+            trim(adjustl(block%text(max(1, s-12):s-1))) // '''); separate items with a comma or a blank')
+          return
+        end if
+      end if
+      keys(nkey)%name = lower(block%mask(s:e))
+      keys(nkey)%line = block%line_of(s)
+      keys(nkey)%first = s
+      keys(nkey)%value_first = p + 1
+    end do
+
+    if (nkey == 0) then
+      if (len_trim(block%text) > 0) then
+        call raise_error(err, EXIT_INPUT, here // str(block%line) // ': &' // block%group // &
+          ': expected key = value items, found ''' // shorten(adjustl(block%text)) // '''')
+      end if
+      allocate(block%keys(0))
+      return
+    end if
+    if (len_trim(block%text(1:keys(1)%first-1)) > 0) then
+      call raise_error(err, EXIT_INPUT, here // str(block%line) // ': &' // block%group // &
+        ': text before the first key: ''' // shorten(adjustl(block%text(1:keys(1)%first-1))) // &
+        '''; write only key = value items in a group')
+      return
+    end if
+    do k = 1, nkey
+      if (k < nkey) then
+        keys(k)%last = keys(k+1)%first - 1
+      else
+        keys(k)%last = len(block%text)
+      end if
+      if (verify(block%mask(keys(k)%value_first:keys(k)%last), ' ,') == 0) then
+        call raise_error(err, EXIT_INPUT, here // str(keys(k)%line) // ': &' // block%group // &
+          ': key ''' // keys(k)%name // ''' has no value; write ' // keys(k)%name // &
+          ' = <value> or remove the key to use its default')
+        return
+      end if
+    end do
+    block%keys = keys(1:nkey)
+  end subroutine find_keys
+
+  pure subroutine skip_blanks_back(s, q)
+    character(len=*), intent(in) :: s
+    integer, intent(inout) :: q
+    do while (q >= 1)
+      if (s(q:q) /= ' ') exit
+      q = q - 1
+    end do
+  end subroutine skip_blanks_back
+
+  !> Names joined by ', ' (for "known ..." lists in messages).
+  pure function join_names(names) result(s)
+    character(len=*), intent(in) :: names(:)
+    character(len=:), allocatable :: s
+    integer :: k
+    s = ''
+    do k = 1, size(names)
+      if (k > 1) s = s // ', '
+      s = s // trim(names(k))
+    end do
+  end function join_names
+
+  !> A piece of deck text short enough to quote in a message.
+  pure function shorten(text) result(s)
+    character(len=*), intent(in) :: text
+    character(len=:), allocatable :: s
+    s = trim(text)
+    if (len(s) > 40) s = s(1:37) // '...'
+  end function shorten
+end module raccord_deck_scan
