@@ -876,8 +876,14 @@ contains
     type(deck_block_t), intent(in) :: blk
     integer, intent(in) :: k
     type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: item
+    integer :: n
+    ! Quote the item as written, subscript included (velocity(3) = 1.0).
+    item = trim(adjustl(blk%text(blk%keys(k)%first:blk%keys(k)%last)))
+    n = len(item)
+    if (item(n:n) == ',') item = trim(item(1:n-1))
     call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
-      blk%keys(k)%name // ''' = ' // blk%value_text(k) // ': cannot read the value (' // trim(iomsg) // &
+      blk%keys(k)%name // ''' (' // item // '): cannot read the value (' // trim(iomsg) // &
       '); give ' // expected_form(blk%group, blk%keys(k)%name))
   end subroutine unreadable
 
