@@ -13,6 +13,8 @@
 !> left out is reported instead of silently taking a value.
 module raccord_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, ieee_set_halting_mode, &
+    ieee_set_flag, ieee_support_halting
   use raccord_kinds, only: wp, name_len, path_len
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str, lower
@@ -62,6 +64,21 @@ contains
     character(len=*), intent(in) :: path
     type(scene_t), intent(out) :: scene
     type(error_t), intent(out) :: err
+    logical :: halt_overflow
+    ! A value such as 1e400 overflows inside the C library's number parser;
+    ! with overflow trapping on (debug builds) that would kill the run before
+    ! check_finite can name the key. Trapping is off while reading only.
+    call ieee_get_halting_mode(ieee_overflow, halt_overflow)
+    if (ieee_support_halting(ieee_overflow)) call ieee_set_halting_mode(ieee_overflow, .false.)
+    call read_deck(path, scene, err)
+    call ieee_set_flag(ieee_overflow, .false.)
+    if (ieee_support_halting(ieee_overflow)) call ieee_set_halting_mode(ieee_overflow, halt_overflow)
+  end subroutine read_scene
+
+  subroutine read_deck(path, scene, err)
+    character(len=*), intent(in) :: path
+    type(scene_t), intent(inout) :: scene
+    type(error_t), intent(inout) :: err
     type(deck_block_t), allocatable :: blocks(:)
     integer :: first(size(GROUPS)), n_of(size(GROUPS))
     integer, allocatable :: body_blk(:), bc_blk(:), amp_blk(:)
@@ -146,7 +163,7 @@ contains
     end do
 
     call check_references(path, blocks, scene, body_blk, bc_blk, amp_blk, err)
-  end subroutine read_scene
+  end subroutine read_deck
 
   pure integer function group_index(name)
     character(len=*), intent(in) :: name

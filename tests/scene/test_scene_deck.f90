@@ -93,7 +93,8 @@ program test_scene_deck
       new_test('bad: multiplier unknown', bad_multiplier_unknown), &
       new_test('bad: friction negative', bad_friction_negative), &
       new_test('bad: tolerance nonpositive', bad_tolerance_nonpositive), &
-      new_test('bad: max iterations zero', bad_max_iterations_zero) &
+      new_test('bad: max iterations zero', bad_max_iterations_zero), &
+      new_test('bad: overflowing value', bad_overflowing_value) &
       ])
 
 contains
@@ -1171,4 +1172,15 @@ contains
       "&contact_pair slave = 's', master = 'm', max_iterations = 0 /", &
       4, [character(len=FRAG_LEN) :: "&contact_pair 's/m'", "'max_iterations'", ">= 1"])
   end subroutine bad_max_iterations_zero
+  !> 1e400 overflows in the number parser; even with overflow trapping on
+  !> (debug builds) the reader must report it rather than die.
+  subroutine bad_overflowing_value(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'overflowing_value', &
+      "&mesh file = 'm.msh', scale = 1e400 /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0 /", &
+      1, [character(len=FRAG_LEN) :: "&mesh", "'scale'", "1e400", "finite"])
+  end subroutine bad_overflowing_value
+
 end program test_scene_deck
