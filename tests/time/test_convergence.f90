@@ -9,7 +9,7 @@
 !> drives the dynamics to the discrete static solution; the relative L2
 !> displacement error must fall at rate 2 for Q4 and 3 for Q8.
 program test_convergence
-  use raccord_kinds, only: wp, i8, pi
+  use raccord_kinds, only: wp, pi
   use raccord_check, only: failure_t, new_test, run_tests, check
   use raccord_error, only: error_t
   use raccord_mesh, only: mesh_t, ELEM_Q4, ELEM_Q8, nodes_per_element

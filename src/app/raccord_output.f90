@@ -1,0 +1,278 @@
+!> What a run writes while it runs: result frames (HDF5 + XDMF), the
+!> time-history table (plain text and HDF5), progress lines in the log.
+module raccord_output
+  use raccord_kinds, only: wp, i8
+  use raccord_error, only: error_t, raise_error
+  use raccord_log, only: log_info, log_raw
+  use raccord_strings, only: str
+  use raccord_mesh, only: nodes_per_element
+  use raccord_model, only: model_t, amplitude_at
+  use raccord_state, only: state_t
+  use raccord_time_step, only: time_plan_t
+  use raccord_scene, only: scene_t
+  use raccord_elastic_block, only: add_nodal_stress
+  use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
+    results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
+    results_write_table, results_set_text, results_close
+  use raccord_history_file, only: history_file_t, history_open, history_write, history_close
+  implicit none
+  private
+
+  integer, parameter :: col_len = 40
+
+  type, public :: output_t
+    character(len=:), allocatable :: stem
+    type(results_t) :: res
+    type(history_file_t) :: hist
+    logical :: is_open = .false.
+    logical :: stress = .true.
+    real(wp) :: frame_interval = 0.0_wp
+    integer :: frames_written = 0
+    integer(i8) :: history_every = 1
+    character(len=col_len), allocatable :: columns(:)
+    real(wp), allocatable :: row(:)
+    real(wp), allocatable :: table(:,:)        !< history rows kept for the HDF5 copy
+    integer :: nrow = 0
+    real(wp), allocatable :: s_node(:,:), wsum(:), r_node(:,:)   !< frame scratch, sized once
+    integer(i8) :: clock_start = 0, clock_rate = 1, clock_last = 0
+    real(wp) :: progress_seconds = 10.0_wp
+  end type output_t
+
+  public :: open_outputs, write_due_outputs, close_outputs, wall_seconds
+
+contains
+
+  !> Create the result files (under temporary names) and write the mesh.
+  subroutine open_outputs(out, scene, model, plan, stem, err)
+    type(output_t), intent(out) :: out
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    character(len=*), intent(in) :: stem
+    type(error_t), intent(inout) :: err
+    type(result_block_t), allocatable :: blocks(:)
+    integer :: ib, k, nblk, nrow_max
+
+    out%stem = stem
+    out%stress = scene%output%stress
+    out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
+    out%progress_seconds = scene%output%progress_seconds
+    out%history_every = int(scene%output%history_every, i8)
+    if (out%history_every <= 0) out%history_every = max(1_i8, plan%nsteps/1000_i8)
+    call history_columns(model, out%columns)
+    allocate(out%row(size(out%columns)))
+    nrow_max = int(plan%nsteps/out%history_every) + 3
+    allocate(out%table(size(out%columns), nrow_max))
+    allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
+
+    call results_open(out%res, stem, err)
+    if (err%failed()) return
+    out%is_open = .true.
+    nblk = 0
+    do ib = 1, size(model%bodies)
+      nblk = nblk + size(model%bodies(ib)%blocks)
+    end do
+    allocate(blocks(nblk))
+    nblk = 0
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        nblk = nblk + 1
+        blocks(nblk)%name = model%bodies(ib)%name
+        if (size(model%bodies(ib)%blocks) > 1) blocks(nblk)%name = blocks(nblk)%name // '_' // str(k)
+        blocks(nblk)%nen = nodes_per_element(model%bodies(ib)%blocks(k)%etype)
+        blocks(nblk)%conn = model%bodies(ib)%blocks(k)%conn
+      end do
+    end do
+    call results_write_mesh(out%res, model%x, blocks, err)
+    if (err%failed()) return
+    do k = 1, size(model%supports)
+      call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
+      if (err%failed()) return
+    end do
+    call results_set_text(out%res, 'scene', scene%path, err)
+    if (err%failed()) return
+    call history_open(out%hist, stem // '.history.txt', out%columns, err)
+    if (err%failed()) return
+    call system_clock(out%clock_start, out%clock_rate)
+    out%clock_last = out%clock_start
+  end subroutine open_outputs
+
+  !> Column names of the history: energies, then reaction and mean
+  !> displacement per support, then total applied force per surface load.
+  subroutine history_columns(model, cols)
+    type(model_t), intent(in) :: model
+    character(len=col_len), allocatable, intent(out) :: cols(:)
+    character(len=col_len), allocatable :: extra(:)
+    integer :: k
+    cols = [character(len=col_len) :: 'time', 'step', 'kinetic', 'internal', 'external_work', &
+      'damping_work', 'contact_work', 'friction_work', 'energy_balance', 'energy_balance_rel']
+    do k = 1, size(model%supports)
+      associate (s => model%supports(k)%set)
+        extra = [character(len=col_len) :: s // '_Rx', s // '_Ry', s // '_ux', s // '_uy']
+      end associate
+      cols = [cols, extra]
+    end do
+    do k = 1, size(model%loads)
+      associate (s => model%loads(k)%set)
+        extra = [character(len=col_len) :: s // '_Fx', s // '_Fy']
+      end associate
+      cols = [cols, extra]
+    end do
+  end subroutine history_columns
+
+  !> History line, result frame and progress line when they are due at the
+  !> state's step (always at the first and last step).
+  subroutine write_due_outputs(out, model, state, err)
+    type(output_t), intent(inout) :: out
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    type(error_t), intent(inout) :: err
+    logical :: last
+    integer(i8) :: now
+
+    last = state%step == state%nsteps
+    if (mod(state%step, out%history_every) == 0 .or. last) then
+      call fill_history_row(out, model, state)
+      call history_write(out%hist, out%row, err)
+      if (err%failed()) return
+      if (out%nrow < size(out%table, 2)) then
+        out%nrow = out%nrow + 1
+        out%table(:, out%nrow) = out%row
+      end if
+    end if
+    ! Frame k is due at the first step whose time reaches k * interval.
+    if (state%time >= (real(out%frames_written, wp) - 1.0e-9_wp)*out%frame_interval .or. last) then
+      call write_frame(out, model, state, err)
+      if (err%failed()) return
+    end if
+    call system_clock(now)
+    if (real(now - out%clock_last, wp)/real(out%clock_rate, wp) >= out%progress_seconds) then
+      out%clock_last = now
+      call log_progress(out, state)
+    end if
+  end subroutine write_due_outputs
+
+  subroutine fill_history_row(out, model, state)
+    type(output_t), intent(inout) :: out
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    integer :: k, j, col
+    real(wp) :: r(2), a
+    associate (e => state%energy, row => out%row)
+      row(1:10) = [state%time, real(state%step, wp), e%kinetic, e%internal, e%external, e%damping, &
+        e%contact, e%friction, e%balance, e%balance/max(e%scale, tiny(1.0_wp))]
+      col = 10
+      do k = 1, size(model%supports)
+        r = 0.0_wp
+        do j = 1, model%ncdof
+          if (model%cdof_support(j) == k) r(model%cdof_comp(j)) = r(model%cdof_comp(j)) + state%reaction(j)
+        end do
+        associate (nodes => model%supports(k)%nodes)
+          row(col+1:col+4) = [r(1), r(2), sum(state%u(1, nodes))/size(nodes), sum(state%u(2, nodes))/size(nodes)]
+        end associate
+        col = col + 4
+      end do
+      do k = 1, size(model%loads)
+        a = amplitude_at(model, model%loads(k)%amplitude, state%time)
+        row(col+1:col+2) = a*sum(model%loads(k)%force, dim=2)
+        col = col + 2
+      end do
+    end associate
+  end subroutine fill_history_row
+
+  !> One result frame at t(n): displacement, velocity v(n), reactions, and
+  !> nodal stress averaged over the elements around each node.
+  subroutine write_frame(out, model, state, err)
+    type(output_t), intent(inout) :: out
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    type(error_t), intent(inout) :: err
+    integer :: ib, k, j
+
+    call results_begin_frame(out%res, int(state%step), state%time, err)
+    if (err%failed()) return
+    call results_write_nodal(out%res, 'displacement', state%u, err)
+    if (err%failed()) return
+    call results_write_nodal(out%res, 'velocity', state%v_mid, err)
+    if (err%failed()) return
+    out%r_node = 0.0_wp
+    do j = 1, model%ncdof
+      out%r_node(model%cdof_comp(j), model%cdof_node(j)) = state%reaction(j)
+    end do
+    call results_write_nodal(out%res, 'reaction', out%r_node, err)
+    if (err%failed()) return
+    if (out%stress) then
+      out%s_node = 0.0_wp
+      out%wsum = 0.0_wp
+      do ib = 1, size(model%bodies)
+        do k = 1, size(model%bodies(ib)%blocks)
+          call add_nodal_stress(model%bodies(ib)%blocks(k), state%u, out%s_node, out%wsum)
+        end do
+      end do
+      do j = 1, model%nnode
+        if (out%wsum(j) > 0.0_wp) out%s_node(:, j) = out%s_node(:, j)/out%wsum(j)
+      end do
+      call results_write_nodal(out%res, 'stress', out%s_node, err)
+      if (err%failed()) return
+    end if
+    call results_end_frame(out%res, err)
+    if (err%failed()) return
+    out%frames_written = out%frames_written + 1
+  end subroutine write_frame
+
+  subroutine log_progress(out, state)
+    type(output_t), intent(in) :: out
+    type(state_t), intent(in) :: state
+    real(wp) :: elapsed, frac, eta
+    character(len=160) :: line
+    elapsed = wall_seconds(out)
+    frac = real(state%step, wp)/real(max(1_i8, state%nsteps), wp)
+    eta = 0.0_wp
+    if (frac > 0.0_wp) eta = elapsed*(1.0_wp - frac)/frac
+    write(line, '(a,i0,a,i0,a,f5.1,a,es11.4,a,a,a,es9.2)') 'step ', state%step, '/', state%nsteps, ' (', &
+      100.0_wp*frac, ' %)  t = ', state%time, '  ETA ', hms(eta), '  energy balance ', &
+      state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
+    call log_info('progress', trim(line))
+  end subroutine log_progress
+
+  !> Wall seconds since the outputs were opened.
+  real(wp) function wall_seconds(out)
+    type(output_t), intent(in) :: out
+    integer(i8) :: now
+    call system_clock(now)
+    wall_seconds = real(now - out%clock_start, wp)/real(out%clock_rate, wp)
+  end function wall_seconds
+
+  pure function hms(seconds) result(s)
+    real(wp), intent(in) :: seconds
+    character(len=8) :: s
+    integer :: t
+    t = nint(seconds)
+    write(s, '(i2.2,":",i2.2,":",i2.2)') min(99, t/3600), mod(t/60, 60), mod(t, 60)
+  end function hms
+
+  !> Close every file: complete -> final names; otherwise the files are
+  !> renamed *.incomplete.* with the reason inside, never passed off as complete.
+  subroutine close_outputs(out, complete, reason, err)
+    type(output_t), intent(inout) :: out
+    logical, intent(in) :: complete
+    character(len=*), intent(in) :: reason
+    type(error_t), intent(inout) :: err
+    type(error_t) :: e1, e2, e3
+    logical :: ok
+    if (.not. out%is_open) return
+    out%is_open = .false.
+    ! Each file is closed even when another failed, so none is left open.
+    call results_write_table(out%res, '/history', out%columns, out%table(:, 1:out%nrow), e1)
+    ok = complete .and. .not. e1%failed()
+    call history_close(out%hist, ok, e2)
+    ok = ok .and. .not. e2%failed()
+    call results_close(out%res, ok, e3, reason)
+    ok = ok .and. .not. e3%failed()
+    if (e1%failed()) call raise_error(err, e1%code, e1%message)
+    if (e2%failed()) call raise_error(err, e2%code, e2%message)
+    if (e3%failed()) call raise_error(err, e3%code, e3%message)
+    if (ok) call log_raw('results: ' // out%stem // '.h5, ' // out%stem // &
+      '.xmf (ParaView), ' // out%stem // '.history.txt (gnuplot)')
+  end subroutine close_outputs
+end module raccord_output

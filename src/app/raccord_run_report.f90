@@ -1,0 +1,143 @@
+!> What a run tells its user before and after it marches: the resolved
+!> model, the active effects, the time step, the cost estimate, and the
+!> closing summary.
+module raccord_run_report
+  use raccord_kinds, only: wp, i8
+  use raccord_log, only: log_raw, log_info
+  use raccord_strings, only: str
+  use raccord_mesh, only: mesh_t, element_name
+  use raccord_model, only: model_t
+  use raccord_scene, only: scene_t
+  use raccord_state, only: state_t, init_state
+  use raccord_time_step, only: time_plan_t
+  use raccord_central_difference, only: compute_forces, predict_motion
+  use raccord_output, only: output_t, wall_seconds
+  implicit none
+  private
+
+  public :: report_plan, report_summary, run_stem
+
+contains
+
+  !> Path stem of the run's files: <output_dir>/<deck file name without extension>.
+  function run_stem(scene) result(stem)
+    type(scene_t), intent(in) :: scene
+    character(len=:), allocatable :: stem
+    integer :: slash, dot
+    character(len=:), allocatable :: base
+    slash = index(scene%path, '/', back=.true.)
+    base = scene%path(slash+1:)
+    dot = index(base, '.', back=.true.)
+    if (dot > 1) base = base(1:dot-1)
+    stem = scene%run%output_dir // '/' // base
+  end function run_stem
+
+  !> The model, its effects and the time plan, with a measured cost estimate.
+  subroutine report_plan(scene, mesh, model, plan)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    integer :: ib, k, nq4, nq8
+    real(wp) :: per_step, c
+    character(len=:), allocatable :: effects
+
+    call log_raw('scene   ' // scene%path // merge('  (' // scene%run%title // ')', repeat(' ', 0), &
+      len_trim(scene%run%title) > 0))
+    call log_raw('mesh    ' // mesh%source // ': ' // str(mesh%nnode) // ' nodes, ' // str(mesh%nelem) // ' elements')
+    do ib = 1, size(model%bodies)
+      associate (b => model%bodies(ib), s => scene%bodies(ib))
+        c = sqrt(s%young/s%density)
+        call log_raw('body    ' // b%name // ': ' // str(size(b%elems)) // ' elements (' // &
+          block_types(b) // '), E = ' // str(s%young, 4) // ', nu = ' // str(s%poisson, 3) // &
+          ', rho = ' // str(s%density, 4) // ', ' // merge('plane stress', 'plane strain', s%plane_stress) // &
+          ', mass = ' // str(b%mass, 4) // ', sqrt(E/rho) = ' // str(c, 4))
+      end associate
+    end do
+    do k = 1, size(model%supports)
+      call log_raw('support ' // model%supports(k)%set // ': ' // &
+        merge('driven displacement', 'fixed              ', model%supports(k)%driven) // ', ' // &
+        str(count(model%cdof_support == k)) // ' constrained dofs')
+    end do
+    do k = 1, size(model%loads)
+      call log_raw('load    ' // model%loads(k)%set // ': total force at amplitude 1 = (' // &
+        str(sum(model%loads(k)%force(1, :)), 4) // ', ' // str(sum(model%loads(k)%force(2, :)), 4) // ')')
+    end do
+
+    ! Active effects: the step loop does the work of these and no other.
+    nq4 = 0
+    nq8 = 0
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        if (element_name(model%bodies(ib)%blocks(k)%etype) == 'Q4') then
+          nq4 = nq4 + model%bodies(ib)%blocks(k)%nel
+        else
+          nq8 = nq8 + model%bodies(ib)%blocks(k)%nel
+        end if
+      end do
+    end do
+    effects = 'elasticity (' // str(nq4) // ' Q4 + ' // str(nq8) // ' Q8)'
+    if (model%has_supports) effects = effects // ', supports (' // str(model%ncdof) // ' dofs)'
+    if (model%has_loads) effects = effects // ', surface loads (' // str(size(model%loads)) // ')'
+    if (model%has_body_force) effects = effects // ', body force'
+    if (model%has_damping) effects = effects // ', mass damping (alpha = ' // str(model%damping, 4) // ')'
+    effects = effects // ', contact pairs: none'
+    call log_raw('effects ' // effects)
+
+    call log_raw('time    t_end = ' // str(plan%t_end, 6) // ', stable dt = ' // str(plan%dt_stable, 6) // &
+      ', dt = ' // str(plan%dt, 6) // ' (' // str(100.0_wp*plan%dt/plan%dt_stable, 3) // ' % of stable), ' // &
+      str(plan%nsteps) // ' steps')
+    per_step = measure_step_seconds(model, plan)
+    call log_raw('cost    about ' // str(1.0e9_wp*per_step/real(max(1, model%nelem), wp), 3) // &
+      ' ns per element per step measured here; estimated run time ' // &
+      str(per_step*real(plan%nsteps, wp), 3) // ' s (without output)')
+  end subroutine report_plan
+
+  function block_types(b) result(s)
+    use raccord_model, only: body_t
+    type(body_t), intent(in) :: b
+    character(len=:), allocatable :: s
+    integer :: k
+    s = ''
+    do k = 1, size(b%blocks)
+      if (k > 1) s = s // '+'
+      s = s // element_name(b%blocks(k)%etype)
+    end do
+  end function block_types
+
+  !> Wall time of one step (forces + predictor) on a scratch state, the
+  !> median-free mean of a few repetitions: enough for an estimate.
+  real(wp) function measure_step_seconds(model, plan) result(sec)
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    type(state_t) :: scratch
+    integer(i8) :: t0, t1, rate
+    integer :: k, reps
+    call init_state(model, plan%dt, plan%nsteps, scratch)
+    reps = max(3, min(50, int(2.0e6_wp/real(max(1, model%nelem), wp))))
+    call compute_forces(model, scratch)
+    call system_clock(t0, rate)
+    do k = 1, reps
+      call compute_forces(model, scratch)
+      call predict_motion(model, scratch)
+    end do
+    call system_clock(t1)
+    sec = real(t1 - t0, wp)/real(rate, wp)/real(reps, wp)
+  end function measure_step_seconds
+
+  !> Wall time, speed and the final energy balance.
+  subroutine report_summary(model, state, out)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    type(output_t), intent(in) :: out
+    real(wp) :: wall
+    wall = wall_seconds(out)
+    call log_info('raccord', 'done: ' // str(state%step) // ' steps in ' // str(wall, 4) // ' s (' // &
+      str(1.0e9_wp*wall/real(max(1_i8, state%step + 1), wp)/real(max(1, model%nelem), wp), 3) // &
+      ' ns per element per step, output included)')
+    call log_info('raccord', 'energy: kinetic ' // str(state%energy%kinetic, 6) // ', internal ' // &
+      str(state%energy%internal, 6) // ', external work ' // str(state%energy%external, 6) // &
+      ', damping ' // str(state%energy%damping, 6) // '; balance error ' // str(state%energy%balance, 3) // &
+      ' (' // str(state%energy%balance/max(state%energy%scale, tiny(1.0_wp)), 3) // ' of the largest energy)')
+  end subroutine report_summary
+end module raccord_run_report
