@@ -137,7 +137,7 @@ contains
     character(len=:), allocatable :: line, v
     integer, allocatable :: f(:), l(:)
     integer :: nf, ftype
-    call next_data_line(tf, 'MeshFormat', 'the version line', line, f, l, nf, err)
+    call next_data_line(tf, 'MeshFormat', 'the version line', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     if (nf < 3) then
       call raise_error(err, EXIT_INPUT, here(tf) // ': the $MeshFormat line needs "version file-type ' // &
@@ -177,7 +177,7 @@ contains
     deallocate(st%name_dim, st%name_tag, st%names)
     allocate(st%name_dim(n), st%name_tag(n), st%names(n))
     do k = 1, n
-      call next_data_line(tf, 'PhysicalNames', 'name ' // str(k) // ' of ' // str(n), line, f, l, nf, err)
+      call next_data_line(tf, 'PhysicalNames', 'name', k, n, line, f, l, nf, err)
       if (err%failed()) return
       call get_int(tf, line, f, l, 1, 'dimension', dim, err)
       call get_int(tf, line, f, l, 2, 'physical tag', tag, err)
@@ -205,7 +205,7 @@ contains
     character(len=:), allocatable :: line
     integer, allocatable :: f(:), l(:), tmp(:,:)
     integer :: nf, counts(4), dim, k, tag, nphys, first, p, phys
-    call next_data_line(tf, 'Entities', 'the entity counts', line, f, l, nf, err)
+    call next_data_line(tf, 'Entities', 'the entity counts', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     do k = 1, 4
       call get_int(tf, line, f, l, k, 'entity count', counts(k), err)
@@ -213,7 +213,7 @@ contains
     if (err%failed()) return
     do dim = 0, 3
       do k = 1, counts(dim + 1)
-        call next_data_line(tf, 'Entities', 'entity ' // str(k) // ' of dimension ' // str(dim), &
+        call next_data_line(tf, 'Entities', 'entity of dimension ' // str(dim), k, counts(dim + 1), &
           line, f, l, nf, err)
         if (err%failed()) return
         call get_int(tf, line, f, l, 1, 'entity tag', tag, err)
@@ -249,7 +249,7 @@ contains
     integer, allocatable :: f(:), l(:), tags(:), tag_line(:)
     integer :: nf, nblock, ntotal, nread, b, n, k, header_line, parametric
     real(wp) :: xy(2)
-    call next_data_line(tf, 'Nodes', 'the block and node counts', line, f, l, nf, err)
+    call next_data_line(tf, 'Nodes', 'the block and node counts', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     header_line = tf%line_no
     call get_int(tf, line, f, l, 1, 'number of blocks', nblock, err)
@@ -257,14 +257,14 @@ contains
     if (err%failed()) return
     nread = 0
     do b = 1, nblock
-      call next_data_line(tf, 'Nodes', 'block ' // str(b) // ' of ' // str(nblock), line, f, l, nf, err)
+      call next_data_line(tf, 'Nodes', 'block', b, nblock, line, f, l, nf, err)
       if (err%failed()) return
       call get_int(tf, line, f, l, 3, 'parametric flag', parametric, err)
       call get_int(tf, line, f, l, 4, 'number of nodes in block', n, err)
       if (err%failed()) return
       allocate(tags(n), tag_line(n))
       do k = 1, n
-        call next_data_line(tf, 'Nodes', 'tag ' // str(k) // ' of the ' // str(n) // ' in block ' // str(b), &
+        call next_data_line(tf, 'Nodes', 'node tag', k, n, &
           line, f, l, nf, err)
         if (err%failed()) return
         call get_int(tf, line, f, l, 1, 'node tag', tags(k), err)
@@ -272,8 +272,8 @@ contains
         tag_line(k) = tf%line_no
       end do
       do k = 1, n
-        call next_data_line(tf, 'Nodes', 'coordinates ' // str(k) // ' of the ' // str(n) // ' in block ' // &
-          str(b), line, f, l, nf, err)
+        call next_data_line(tf, 'Nodes', 'node coordinates', k, n, &
+          line, f, l, nf, err)
         if (err%failed()) return
         call get_real(tf, line, f, l, 1, 'x', xy(1), err)
         call get_real(tf, line, f, l, 2, 'y', xy(2), err)
@@ -305,7 +305,7 @@ contains
     call read_count(tf, 'Nodes', 'the number of nodes', n, err)
     if (err%failed()) return
     do k = 1, n
-      call next_data_line(tf, 'Nodes', 'node ' // str(k) // ' of ' // str(n), line, f, l, nf, err)
+      call next_data_line(tf, 'Nodes', 'node', k, n, line, f, l, nf, err)
       if (err%failed()) return
       call get_int(tf, line, f, l, 1, 'node id', id, err)
       call get_real(tf, line, f, l, 2, 'x', xy(1), err)
@@ -326,7 +326,7 @@ contains
     integer, allocatable :: f(:), l(:), phys(:)
     integer :: nf, nblock, ntotal, nread, b, n, k, a, header_line, edim, etag, gtype, nn, id
     integer :: nodes(8)
-    call next_data_line(tf, 'Elements', 'the block and element counts', line, f, l, nf, err)
+    call next_data_line(tf, 'Elements', 'the block and element counts', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     header_line = tf%line_no
     call get_int(tf, line, f, l, 1, 'number of blocks', nblock, err)
@@ -334,7 +334,7 @@ contains
     if (err%failed()) return
     nread = 0
     do b = 1, nblock
-      call next_data_line(tf, 'Elements', 'block ' // str(b) // ' of ' // str(nblock), line, f, l, nf, err)
+      call next_data_line(tf, 'Elements', 'block', b, nblock, line, f, l, nf, err)
       if (err%failed()) return
       call get_int(tf, line, f, l, 1, 'entity dimension', edim, err)
       call get_int(tf, line, f, l, 2, 'entity tag', etag, err)
@@ -348,8 +348,8 @@ contains
       end if
       phys = pack(st%ent(3, 1:st%nent), st%ent(1, 1:st%nent) == edim .and. st%ent(2, 1:st%nent) == etag)
       do k = 1, n
-        call next_data_line(tf, 'Elements', 'element ' // str(k) // ' of the ' // str(n) // ' in block ' // &
-          str(b), line, f, l, nf, err)
+        call next_data_line(tf, 'Elements', 'element', k, n, &
+          line, f, l, nf, err)
         if (err%failed()) return
         if (nf /= 1 + nn) then
           call raise_error(err, EXIT_INPUT, here(tf) // ': an element of type ' // str(gtype) // ' needs its tag ' // &
@@ -387,7 +387,7 @@ contains
     call read_count(tf, 'Elements', 'the number of elements', n, err)
     if (err%failed()) return
     do k = 1, n
-      call next_data_line(tf, 'Elements', 'element ' // str(k) // ' of ' // str(n), line, f, l, nf, err)
+      call next_data_line(tf, 'Elements', 'element', k, n, line, f, l, nf, err)
       if (err%failed()) return
       call get_int(tf, line, f, l, 1, 'element id', id, err)
       call get_int(tf, line, f, l, 2, 'element type', gtype, err)
@@ -541,9 +541,12 @@ contains
 
   !> Next line of a section's data, split at blanks. The end of the file or
   !> the next "$" line here means the counts promise more than the file holds.
-  subroutine next_data_line(tf, section, expected, line, f, l, nf, err)
+  !> What is expected is "what" or, with n > 0, "what k of n" (built only
+  !> for a message: this runs once per line of the file).
+  subroutine next_data_line(tf, section, what, k, n, line, f, l, nf, err)
     type(text_file_t), intent(inout) :: tf
-    character(len=*), intent(in) :: section, expected
+    character(len=*), intent(in) :: section, what
+    integer, intent(in) :: k, n
     character(len=:), allocatable, intent(out) :: line
     integer, allocatable, intent(out) :: f(:), l(:)
     integer, intent(out) :: nf
@@ -554,23 +557,34 @@ contains
     if (err%failed()) return
     if (eof) then
       call raise_error(err, EXIT_INPUT, tf%path // ': the file ends inside $' // section // ' (after line ' // &
-        str(tf%line_no) // ', expecting ' // expected // ') and $End' // section // ' is missing: ' // &
+        str(tf%line_no) // ', expecting ' // expected(what, k, n) // ') and $End' // section // ' is missing: ' // &
         'the file is truncated; re-export the mesh')
       return
     end if
     if (len_trim(line) > 0) then
       if (adjustl(line) == '$End' // section .or. line(1:1) == '$') then
-        call raise_error(err, EXIT_INPUT, here(tf) // ': $' // section // ' ends before ' // expected // &
+        call raise_error(err, EXIT_INPUT, here(tf) // ': $' // section // ' ends before ' // expected(what, k, n) // &
           ': the counts in the section do not match its data; re-export the mesh')
         return
       end if
     end if
     call split_fields(line, ' ', f, l, nf)
     if (nf == 0) then
-      call raise_error(err, EXIT_INPUT, here(tf) // ': empty line in $' // section // ' where ' // expected // &
-        ' was expected: re-export the mesh')
+      call raise_error(err, EXIT_INPUT, here(tf) // ': empty line in $' // section // ' where ' // &
+        expected(what, k, n) // ' was expected: re-export the mesh')
     end if
   end subroutine next_data_line
+
+  pure function expected(what, k, n) result(s)
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: k, n
+    character(len=:), allocatable :: s
+    if (n > 0) then
+      s = what // ' ' // str(k) // ' of ' // str(n)
+    else
+      s = what
+    end if
+  end function expected
 
   !> A section whose first data line is a single count.
   subroutine read_count(tf, section, what, n, err)
@@ -582,7 +596,7 @@ contains
     integer, allocatable :: f(:), l(:)
     integer :: nf
     n = 0
-    call next_data_line(tf, section, what, line, f, l, nf, err)
+    call next_data_line(tf, section, what, 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     call get_int(tf, line, f, l, 1, what, n, err)
     if (err%failed()) return

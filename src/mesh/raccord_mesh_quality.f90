@@ -42,7 +42,7 @@ contains
     real(wp), parameter :: g2 = 0.577350269189625764509148780502_wp   ! 1/sqrt(3): 2-point Gauss
     real(wp), parameter :: g3 = 0.774596669241483377035853079956_wp   ! sqrt(3/5): 3-point Gauss
     real(wp), allocatable :: xi(:), eta(:)
-    character(len=12), allocatable :: label(:)
+    character(len=16), allocatable :: label(:)
     real(wp) :: h, scale, r, rmax
     integer :: k, a, b, npt, ngauss
     logical :: all_negative
