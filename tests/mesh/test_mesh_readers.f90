@@ -135,9 +135,9 @@ contains
     call check_arc_normals(failure, m, 'scene Q4')
   end subroutine test_scene_q4_sets
 
-  !> The upper body's curved bottom: normals point away from the body, i.e.
-  !> towards the arc's centre (1, 1.8)'s opposite side: downwards and
-  !> towards -(x - centre) ... precisely: outward = away from the centre.
+  !> The upper body's curved bottom is an arc of the circle centred at
+  !> (1, 1.8) and the body lies inside that circle, so each edge's outward
+  !> normal must point away from the centre.
   subroutine check_arc_normals(failure, m, label)
     type(failure_t), allocatable, intent(inout) :: failure
     type(mesh_t), intent(in) :: m
