@@ -164,7 +164,7 @@ contains
     logical :: found
 
     call split_fields(sl%text, ',', f, l, nf)
-    kw = lower(sl%text(2:l(1)))
+    kw = lower(trim(adjustl(sl%text(2:l(1)))))
     at = loc_text(d, sl)
 
     if (kw == 'include') then
@@ -191,7 +191,7 @@ contains
       return
     end if
 
-    st%keyword = '*' // sl%text(2:l(1))
+    st%keyword = '*' // trim(adjustl(sl%text(2:l(1))))
     st%set = 0
     st%surf = 0
     st%generate = has_flag(sl%text, f, l, nf, 'generate')

@@ -109,7 +109,12 @@ contains
           call read_elements_22(tf, st, d, err)
         end if
       case default
-        if (t(1:min(4, len(t))) == '$End') then
+        if (t == '$PartitionedEntities') then
+          ! partitioned entities hide the physical groups of the elements
+          call raise_error(err, EXIT_INPUT, here(tf) // ': the mesh is partitioned; raccord reads whole ' // &
+            'meshes: save it unpartitioned (mesh without ' // &
+            'PartitionMesh, or UnpartitionMesh before saving)')
+        else if (t(1:min(4, len(t))) == '$End') then
           call raise_error(err, EXIT_INPUT, here(tf) // ': "' // t // '" closes no open section: ' // &
             'the file was edited or concatenated; re-export the mesh')
         else

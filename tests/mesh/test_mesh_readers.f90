@@ -30,6 +30,7 @@ program test_mesh_readers
     new_test('bad: non-numeric field msh', test_bad_non_numeric_msh), &
     new_test('bad: non-numeric field inp', test_bad_non_numeric_inp), &
     new_test('bad: binary msh', test_bad_binary), &
+    new_test('bad: partitioned msh', test_bad_partitioned), &
     new_test('bad: triangle element', test_bad_triangle), &
     new_test('bad: 9-node quadrilateral', test_bad_quad9), &
     new_test('bad: unknown inp element type', test_bad_unknown_type), &
@@ -381,6 +382,12 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call expect_error(failure, 'binary.msh', 'binary.msh:2', 'Mesh.Binary = 0')
   end subroutine test_bad_binary
+
+  subroutine test_bad_partitioned(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    ! gmsh rect.geo -2 -part 2: the physical groups hide behind partition entities
+    call expect_error(failure, 'partitioned.msh', 'partitioned.msh:25', 'partitioned')
+  end subroutine test_bad_partitioned
 
   subroutine test_bad_triangle(failure)
     type(failure_t), allocatable, intent(out) :: failure
