@@ -42,8 +42,11 @@ contains
     real(wp) :: per_step, c
     character(len=:), allocatable :: effects
 
-    call log_raw('scene   ' // scene%path // merge('  (' // scene%run%title // ')', repeat(' ', 0), &
-      len_trim(scene%run%title) > 0))
+    if (len_trim(scene%run%title) > 0) then
+      call log_raw('scene   ' // scene%path // '  (' // trim(scene%run%title) // ')')
+    else
+      call log_raw('scene   ' // scene%path)
+    end if
     call log_raw('mesh    ' // mesh%source // ': ' // str(mesh%nnode) // ' nodes, ' // str(mesh%nelem) // ' elements')
     do ib = 1, size(model%bodies)
       associate (b => model%bodies(ib), s => scene%bodies(ib))
@@ -56,7 +59,7 @@ contains
     end do
     do k = 1, size(model%supports)
       call log_raw('support ' // model%supports(k)%set // ': ' // &
-        merge('driven displacement', 'fixed              ', model%supports(k)%driven) // ', ' // &
+        trim(merge('driven displacement', 'fixed              ', model%supports(k)%driven)) // ', ' // &
         str(count(model%cdof_support == k)) // ' constrained dofs')
     end do
     do k = 1, size(model%loads)

@@ -29,19 +29,48 @@ contains
     s = trim(buf)
   end function str_i8
 
-  !> Real to text with `digits` significant digits (default 6), no padding.
+  !> Real to text with `digits` significant digits (default 6): plain
+  !> decimal between 1e-3 and 1e6 ("0.0123", "89.9", "70000"), otherwise
+  !> scientific ("1.97484e-07"); trailing zeros dropped.
   pure function str_real(x, digits) result(s)
     real(wp), intent(in) :: x
     integer, intent(in), optional :: digits
     character(len=:), allocatable :: s
-    character(len=40) :: buf
-    character(len=20) :: fmt
-    integer :: d
+    character(len=48) :: buf
+    character(len=24) :: fmt
+    integer :: d, decimals, e, k
     d = 6
     if (present(digits)) d = max(1, min(17, digits))
-    write(fmt, '(a,i0,a,i0,a)') '(es', d + 8, '.', d - 1, ')'
-    write(buf, fmt) x
-    s = trim(adjustl(buf))
+    if (x == 0.0_wp) then
+      s = '0'
+      return
+    end if
+    if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
+      decimals = max(0, d - 1 - floor(log10(abs(x))))
+      write(fmt, '(a,i0,a)') '(f40.', decimals, ')'
+      write(buf, fmt) x
+      s = trim(adjustl(buf))
+      if (index(s, '.') > 0) then
+        k = len(s)
+        do while (s(k:k) == '0')
+          k = k - 1
+        end do
+        if (s(k:k) == '.') k = k - 1
+        s = s(1:k)
+      end if
+    else
+      write(fmt, '(a,i0,a,i0,a)') '(es', d + 8, '.', d - 1, ')'
+      write(buf, fmt) x
+      s = trim(adjustl(buf))
+      ! Mantissa: drop trailing zeros; exponent: lower-case e.
+      e = index(s, 'E')
+      k = e - 1
+      do while (s(k:k) == '0')
+        k = k - 1
+      end do
+      if (s(k:k) == '.') k = k - 1
+      s = s(1:k) // 'e' // s(e+1:)
+    end if
   end function str_real
 
   pure function str_logical(l) result(s)
