@@ -2,16 +2,28 @@
 !> (doc/theory-elements.md; method.md section 2 for the lumped mass and the
 !> stable step).
 !>
-!> Hot-loop design (theory section 6): at every Gauss point g of element e
-!> the block keeps H = sqrt(w_g detJ h) J^-1 (2x2, 4 reals), so that with
-!> the natural derivatives D_a(g) = dN_a/d(xi, eta), the same for every element,
+!> Hot-loop design (theory section 6). Elements are processed in chunks of
+!> chunk_len: gather -> kernel vectorised across the chunk -> scatter, with
+!> the per-element data stored chunk-major (element index first inside a
+!> chunk) so the kernel streams it with unit stride.
+!>
+!> Q4 (theory eqs. 6.2-6.5): the fully integrated (2x2) bilinear stiffness
+!> splits exactly into a constant-strain part built on the mean gradient
+!> b (= the gradient at the element centre) and a rank-2 hourglass part,
+!>   K = (A h) B0^T C B0 + (gamma gamma^T) (x) M,
+!> M the 2x2 Gauss sum of the hourglass-strain energy. The block keeps
+!> beta = sqrt(A h) b (4 reals, b_3 = -b_1, b_4 = -b_2), gamma (4) and M (3)
+!> per element: 11 reals and about 60 flops per element and step. The cold
+!> map coefficients geo(6, nel) serve mass, body force, stiffness and stress.
+!>
+!> Q8 (theory eq. 6.1): at every Gauss point g the block keeps
+!> H = sqrt(w_g detJ h) J^-1 (2x2, 4 reals), so that with the natural
+!> derivatives D_a(g) = dN_a/d(xi, eta), the same for every element,
 !>   sqrt(c) grad u = (sum_a u_a D_a^T) H,   sqrt(c) sigma = C : sym(.)
-!>   f_a += (sqrt(c) sigma) H^T D_a          (c = w_g detJ h, theory eq. 6.1)
-!> which is f = K u with K = sum_g c B^T C B (eq. 3.2). Elements are processed
-!> in chunks of chunk_len: gather -> kernel vectorised across the chunk ->
-!> scatter, and H is stored chunk-major, h(chunk_len, 4, ngp, nchunk), so
-!> the kernel streams it with unit stride. The cold data c(ngp, nel) serve
-!> mass, body force and stress recovery.
+!>   f_a += (sqrt(c) sigma) H^T D_a          (c = w_g detJ h)
+!> which is f = K u with K = sum_g c B^T C B (eq. 3.2). H is stored
+!> h(chunk_len, 4, ngp, nchunk); the cold data c(ngp, nel) serve mass,
+!> body force and stress recovery.
 module raccord_elastic_block
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
@@ -28,6 +40,19 @@ module raccord_elastic_block
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = 32
   integer, parameter :: max_nen = 8, max_gp = 9
+  !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
+  !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
+  !> M11, M12, M22 (eq. 6.5).
+  integer, parameter :: nq4 = 11
+  integer, parameter :: q4_bx1 = 1, q4_bx2 = 2, q4_by1 = 3, q4_by2 = 4, q4_g1 = 5, &
+    q4_m11 = 9, q4_m12 = 10, q4_m22 = 11
+  !> Q4 map x(xi, eta) = x0 + a xi + b eta + c xi eta (eq. 6.2): geo(1:6, e) =
+  !> (a_x, b_x, c_x, a_y, b_y, c_y).
+  integer, parameter :: ngeo = 6
+  !> Natural coordinates of the Q4 corners and the hourglass vector h = xi eta.
+  real(wp), parameter :: xi_c(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
+  real(wp), parameter :: eta_c(4) = [-1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp]
+  real(wp), parameter :: hg_c(4) = [1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp]
 
   !> One material, one element type, many elements.
   type, public :: elastic_block_t
@@ -45,6 +70,11 @@ module raccord_elastic_block
     real(wp), allocatable, private :: nref(:,:)      !< (nen, ngp) shape functions at the Gauss points
     real(wp), allocatable, private :: dnref(:,:,:)   !< (2, nen, ngp) natural derivatives at the Gauss points
     real(wp), allocatable, private :: extrap(:,:)    !< (nen, ngp) Gauss point -> node extrapolation
+    real(wp), allocatable, private :: gxi(:,:)       !< (2, ngp) natural coordinates of the Gauss points
+    ! Q4 only
+    real(wp), allocatable, private :: q4(:,:,:)      !< (chunk_len, nq4, nchunk) hot kernel data (eqs. 6.2-6.5)
+    real(wp), allocatable, private :: geo(:,:)       !< (ngeo, nel) map coefficients (eq. 6.2), cold
+    ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
   end type elastic_block_t
@@ -133,8 +163,14 @@ contains
     call gauss_legendre(n1, gx(1:n1), gw(1:n1))
 
     allocate(blk%conn(nen, blk%nel), blk%wts(ngp), blk%nref(nen, ngp), blk%dnref(2, nen, ngp), &
-      blk%extrap(nen, ngp), blk%h(chunk_len, 4, ngp, blk%nchunk), blk%c(ngp, blk%nel), &
-      stat=stat, errmsg=msg)
+      blk%extrap(nen, ngp), blk%gxi(2, ngp), stat=stat, errmsg=msg)
+    if (stat == 0) then
+      if (etype == ELEM_Q4) then
+        allocate(blk%q4(chunk_len, nq4, blk%nchunk), blk%geo(ngeo, blk%nel), stat=stat, errmsg=msg)
+      else
+        allocate(blk%h(chunk_len, 4, ngp, blk%nchunk), blk%c(ngp, blk%nel), stat=stat, errmsg=msg)
+      end if
+    end if
     if (stat /= 0) then
       call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
         ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
@@ -147,6 +183,7 @@ contains
       do i = 1, n1
         g = i + n1*(j - 1)
         blk%wts(g) = gw(i)*gw(j)
+        blk%gxi(:, g) = [gx(i), gx(j)]
         call shape_quad(etype, gx(i), gx(j), blk%nref(:, g), blk%dnref(:, :, g))
       end do
     end do
@@ -166,6 +203,11 @@ contains
         end do
       end do
     end do
+
+    if (etype == ELEM_Q4) then
+      call init_q4_data(blk, x, err)
+      return
+    end if
 
     blk%h = 0.0_wp
     do e = 1, blk%nel
@@ -193,6 +235,109 @@ contains
       end do
     end do
   end subroutine init_elastic_block
+
+  !> Q4 data of every element: map coefficients (cold) and the kernel's
+  !> beta, gamma, M (hot), theory eqs. 6.2-6.5. Fails (EXIT_INPUT) on
+  !> detJ <= 0 at a Gauss point, naming the element.
+  subroutine init_q4_data(blk, x, err)
+    type(elastic_block_t), intent(inout) :: blk
+    real(wp), intent(in) :: x(:,:)
+    type(error_t), intent(inout) :: err
+    character(len=*), parameter :: where = 'init_elastic_block: '
+    real(wp) :: xe(2, 4), geo(ngeo), detj, j4, s, bgx(4), bgy(4), gam(4), hm(3), p1, p2, wq, xi, eta, l2m
+    integer :: e, g, ic, il, a
+
+    l2m = blk%lam + 2.0_wp*blk%mu
+    blk%q4 = 0.0_wp
+    do e = 1, blk%nel
+      ! relative to node 1: the sums below have zero-sum weights, and this
+      ! keeps their round-off at the element's size, not its distance from 0
+      do a = 1, 4
+        xe(:, a) = x(:, blk%conn(a, e)) - x(:, blk%conn(1, e))
+      end do
+      ! eq. 6.2: x(xi, eta) = x0 + a xi + b eta + c xi eta, a = xi_c . x / 4, ...
+      geo(1) = 0.25_wp*dot_product(xi_c, xe(1, :))
+      geo(2) = 0.25_wp*dot_product(eta_c, xe(1, :))
+      geo(3) = 0.25_wp*dot_product(hg_c, xe(1, :))
+      geo(4) = 0.25_wp*dot_product(xi_c, xe(2, :))
+      geo(5) = 0.25_wp*dot_product(eta_c, xe(2, :))
+      geo(6) = 0.25_wp*dot_product(hg_c, xe(2, :))
+      blk%geo(:, e) = geo
+      do g = 1, blk%ngp
+        detj = q4_detj(geo, blk%gxi(1, g), blk%gxi(2, g))
+        if (.not. (detj > 0.0_wp)) then
+          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(ELEM_Q4) // &
+            ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
+            '; its nodes must be counter-clockwise and the element not degenerate')
+          return
+        end if
+      end do
+      associate (ax => geo(1), bx => geo(2), cx => geo(3), ay => geo(4), by => geo(5), cy => geo(6))
+        ! mean gradient b = dN/dx at the centre (eq. 6.2); 4 detJ(0) = area A
+        j4 = 4.0_wp*(ax*by - bx*ay)
+        bgx(1) = (ay - by)/j4
+        bgy(1) = (bx - ax)/j4
+        bgx(2) = (ay + by)/j4
+        bgy(2) = -(ax + bx)/j4
+        bgx(3:4) = -bgx(1:2)
+        bgy(3:4) = -bgy(1:2)
+        ! hourglass vector (eq. 6.3): gamma = (h - (h . x) b_x - (h . y) b_y)/4
+        gam = 0.25_wp*hg_c - cx*bgx - cy*bgy
+        ! H_ij = sum_g w_g h detJ_g dh/dx_i dh/dx_j, dh/dx = p/detJ (eq. 6.4)
+        hm = 0.0_wp
+        do g = 1, blk%ngp
+          xi = blk%gxi(1, g)
+          eta = blk%gxi(2, g)
+          p1 = eta*by - xi*ay
+          p2 = xi*ax - eta*bx
+          wq = blk%wts(g)*blk%thickness/q4_detj(geo, xi, eta)
+          hm(1) = hm(1) + wq*p1*p1
+          hm(2) = hm(2) + wq*p1*p2
+          hm(3) = hm(3) + wq*p2*p2
+        end do
+      end associate
+      s = sqrt(j4*blk%thickness)
+      ic = (e - 1)/chunk_len + 1
+      il = e - (ic - 1)*chunk_len
+      blk%q4(il, q4_bx1, ic) = s*bgx(1)
+      blk%q4(il, q4_bx2, ic) = s*bgx(2)
+      blk%q4(il, q4_by1, ic) = s*bgy(1)
+      blk%q4(il, q4_by2, ic) = s*bgy(2)
+      blk%q4(il, q4_g1:q4_g1 + 3, ic) = gam
+      ! hourglass stiffness (eq. 6.5)
+      blk%q4(il, q4_m11, ic) = l2m*hm(1) + blk%mu*hm(3)
+      blk%q4(il, q4_m12, ic) = (blk%lam + blk%mu)*hm(2)
+      blk%q4(il, q4_m22, ic) = l2m*hm(3) + blk%mu*hm(1)
+    end do
+  end subroutine init_q4_data
+
+  !> detJ of the Q4 map at (xi, eta): j0 + j1 xi + j2 eta (eq. 6.2).
+  pure real(wp) function q4_detj(geo, xi, eta) result(detj)
+    real(wp), intent(in) :: geo(ngeo), xi, eta
+    detj = (geo(1)*geo(5) - geo(2)*geo(4)) + xi*(geo(1)*geo(6) - geo(3)*geo(4)) + &
+      eta*(geo(3)*geo(5) - geo(2)*geo(6))
+  end function q4_detj
+
+  !> Jacobian J_ik = dx_i/dxi_k of the Q4 map at (xi, eta) (eqs. 1.4, 6.2).
+  pure function q4_jacobian(geo, xi, eta) result(jac)
+    real(wp), intent(in) :: geo(ngeo), xi, eta
+    real(wp) :: jac(2, 2)
+    jac(1, 1) = geo(1) + geo(3)*eta
+    jac(1, 2) = geo(2) + geo(3)*xi
+    jac(2, 1) = geo(4) + geo(6)*eta
+    jac(2, 2) = geo(5) + geo(6)*xi
+  end function q4_jacobian
+
+  !> c = w_g detJ h of element e at Gauss point g.
+  pure real(wp) function gauss_c(blk, e, g) result(cg)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e, g
+    if (blk%etype == ELEM_Q4) then
+      cg = blk%wts(g)*blk%thickness*q4_detj(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
+    else
+      cg = blk%c(g, e)
+    end if
+  end function gauss_c
 
   !> 1D Lagrange basis polynomial i through the points p, at s.
   pure real(wp) function lagrange_1d(p, i, s)
@@ -226,7 +371,7 @@ contains
         end do
       end do
       if (blk%etype == ELEM_Q4) then
-        call kernel_q4(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
+        call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
       else
         call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
       end if
@@ -240,74 +385,66 @@ contains
     end do chunks
   end subroutine add_internal_force
 
-  !> fe = K_e ue for nc Q4 elements of a chunk (theory eq. 6.1); kernel_q8
-  !> is the same code with nen = 8, ngp = 9 (compile-time sizes let the
-  !> compiler unroll the node loops; a shared runtime-size kernel measured
-  !> slower). One element per iteration of the chunk loop, its nodal values
-  !> and forces in registers; the loop runs across the chunk in SIMD lanes. h holds
-  !> sqrt(c) J^-1 at each Gauss point, dn the natural derivatives.
-  pure subroutine kernel_q4(nc, lam, mu, dn, h, ue, fe)
+  !> fe = K_e ue for nc Q4 elements of a chunk, fully integrated K in the
+  !> exact split K = (A h) B0^T C B0 + (gamma gamma^T) (x) M (theory eqs.
+  !> 6.2-6.5). One element per iteration, the loop runs across the chunk in
+  !> SIMD lanes; every array is read with unit stride.
+  pure subroutine kernel_q4(nc, lam, mu, hq, ue, fe)
     integer, intent(in) :: nc
-    integer, parameter :: nen = 4, ngp = 4
-    real(wp), intent(in) :: lam, mu, dn(2, nen, ngp), h(chunk_len, 4, ngp), ue(chunk_len, 2, max_nen)
+    real(wp), intent(in) :: lam, mu, hq(chunk_len, nq4), ue(chunk_len, 2, max_nen)
     real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
-    real(wp) :: ux(max_nen), uy(max_nen), fx(max_nen), fy(max_nen)
-    real(wp) :: d11, d12, d21, d22, h11, h21, h12, h22, g11, g12, g21, g22, tr, s11, s22, s12, mu2
-    real(wp) :: t11, t12, t21, t22
-    integer :: g, a, i
+    real(wp) :: bx1, bx2, by1, by2, g1, g2, g3, g4, dx13, dx24, dy13, dy24
+    real(wp) :: gxx, gxy, gyx, gyy, tr, sxx, syy, sxy, fx1, fx2, fy1, fy2, qx, qy, rx, ry, mu2
+    integer :: i
     mu2 = 2.0_wp*mu
     elements: do i = 1, nc
-      do a = 1, nen
-        ux(a) = ue(i, 1, a)
-        uy(a) = ue(i, 2, a)
-        fx(a) = 0.0_wp
-        fy(a) = 0.0_wp
-      end do
-      gauss: do g = 1, ngp
-        ! natural gradient of u: d = sum_a u_a (dN_a/dxi, dN_a/deta)
-        d11 = 0.0_wp
-        d12 = 0.0_wp
-        d21 = 0.0_wp
-        d22 = 0.0_wp
-        do a = 1, nen
-          d11 = d11 + ux(a)*dn(1, a, g)
-          d12 = d12 + ux(a)*dn(2, a, g)
-          d21 = d21 + uy(a)*dn(1, a, g)
-          d22 = d22 + uy(a)*dn(2, a, g)
-        end do
-        h11 = h(i, 1, g)
-        h21 = h(i, 2, g)
-        h12 = h(i, 3, g)
-        h22 = h(i, 4, g)
-        ! sqrt(c) grad u = d H
-        g11 = d11*h11 + d12*h21
-        g12 = d11*h12 + d12*h22
-        g21 = d21*h11 + d22*h21
-        g22 = d21*h12 + d22*h22
-        ! Hooke (theory eq. 3.1), scaled by sqrt(c)
-        tr = lam*(g11 + g22)
-        s11 = tr + mu2*g11
-        s22 = tr + mu2*g22
-        s12 = mu*(g12 + g21)
-        ! t = (sqrt(c) sigma) H^T; f_a += t (dN_a/dxi, dN_a/deta)
-        t11 = s11*h11 + s12*h12
-        t12 = s11*h21 + s12*h22
-        t21 = s12*h11 + s22*h12
-        t22 = s12*h21 + s22*h22
-        do a = 1, nen
-          fx(a) = fx(a) + t11*dn(1, a, g) + t12*dn(2, a, g)
-          fy(a) = fy(a) + t21*dn(1, a, g) + t22*dn(2, a, g)
-        end do
-      end do gauss
-      do a = 1, nen
-        fe(i, 1, a) = fx(a)
-        fe(i, 2, a) = fy(a)
-      end do
+      bx1 = hq(i, q4_bx1)
+      bx2 = hq(i, q4_bx2)
+      by1 = hq(i, q4_by1)
+      by2 = hq(i, q4_by2)
+      ! constant-strain part (eq. 6.2): sqrt(A h) grad u = sum_a u_a beta_a^T,
+      ! with beta_3 = -beta_1, beta_4 = -beta_2
+      dx13 = ue(i, 1, 1) - ue(i, 1, 3)
+      dx24 = ue(i, 1, 2) - ue(i, 1, 4)
+      dy13 = ue(i, 2, 1) - ue(i, 2, 3)
+      dy24 = ue(i, 2, 2) - ue(i, 2, 4)
+      gxx = bx1*dx13 + bx2*dx24
+      gxy = by1*dx13 + by2*dx24
+      gyx = bx1*dy13 + bx2*dy24
+      gyy = by1*dy13 + by2*dy24
+      ! Hooke (eq. 3.1), scaled by sqrt(A h); f_a = sigma beta_a
+      tr = lam*(gxx + gyy)
+      sxx = tr + mu2*gxx
+      syy = tr + mu2*gyy
+      sxy = mu*(gxy + gyx)
+      fx1 = sxx*bx1 + sxy*by1
+      fx2 = sxx*bx2 + sxy*by2
+      fy1 = sxy*bx1 + syy*by1
+      fy2 = sxy*bx2 + syy*by2
+      ! hourglass part (eqs. 6.4-6.5): q = gamma . u, f_a += gamma_a M q
+      g1 = hq(i, q4_g1)
+      g2 = hq(i, q4_g1 + 1)
+      g3 = hq(i, q4_g1 + 2)
+      g4 = hq(i, q4_g1 + 3)
+      qx = g1*ue(i, 1, 1) + g2*ue(i, 1, 2) + g3*ue(i, 1, 3) + g4*ue(i, 1, 4)
+      qy = g1*ue(i, 2, 1) + g2*ue(i, 2, 2) + g3*ue(i, 2, 3) + g4*ue(i, 2, 4)
+      rx = hq(i, q4_m11)*qx + hq(i, q4_m12)*qy
+      ry = hq(i, q4_m12)*qx + hq(i, q4_m22)*qy
+      fe(i, 1, 1) = fx1 + g1*rx
+      fe(i, 1, 2) = fx2 + g2*rx
+      fe(i, 1, 3) = g3*rx - fx1
+      fe(i, 1, 4) = g4*rx - fx2
+      fe(i, 2, 1) = fy1 + g1*ry
+      fe(i, 2, 2) = fy2 + g2*ry
+      fe(i, 2, 3) = g3*ry - fy1
+      fe(i, 2, 4) = g4*ry - fy2
     end do elements
   end subroutine kernel_q4
 
-  !> fe = K_e ue for nc Q8 elements of a chunk: kernel_q4 with nen = 8,
-  !> ngp = 9 (keep the two bodies identical).
+  !> fe = K_e ue for nc Q8 elements of a chunk (theory eq. 6.1). Sizes are
+  !> compile-time constants so the compiler unrolls the node loops; one
+  !> element per iteration of the chunk loop, the loop runs in SIMD lanes;
+  !> h holds sqrt(c) J^-1 at each Gauss point, dn the natural derivatives.
   pure subroutine kernel_q8(nc, lam, mu, dn, h, ue, fe)
     integer, intent(in) :: nc
     integer, parameter :: nen = 8, ngp = 9
@@ -373,14 +510,25 @@ contains
     type(elastic_block_t), intent(in) :: blk
     integer, intent(in) :: e, g
     real(wp), intent(out) :: gr(:,:)
-    real(wp) :: h11, h21, h12, h22
+    real(wp) :: h11, h21, h12, h22, jac(2, 2), detj, sq
     integer :: ic, il, a
-    ic = (e - 1)/chunk_len + 1
-    il = e - (ic - 1)*chunk_len
-    h11 = blk%h(il, 1, g, ic)
-    h21 = blk%h(il, 2, g, ic)
-    h12 = blk%h(il, 3, g, ic)
-    h22 = blk%h(il, 4, g, ic)
+    if (blk%etype == ELEM_Q4) then
+      ! H = sqrt(c) J^-1 from the map (eqs. 1.4, 6.2), as stored for Q8
+      jac = q4_jacobian(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
+      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+      sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
+      h11 = sq*jac(2, 2)
+      h21 = -sq*jac(2, 1)
+      h12 = -sq*jac(1, 2)
+      h22 = sq*jac(1, 1)
+    else
+      ic = (e - 1)/chunk_len + 1
+      il = e - (ic - 1)*chunk_len
+      h11 = blk%h(il, 1, g, ic)
+      h21 = blk%h(il, 2, g, ic)
+      h12 = blk%h(il, 3, g, ic)
+      h22 = blk%h(il, 4, g, ic)
+    end if
     do a = 1, blk%nen
       gr(1, a) = blk%dnref(1, a, g)*h11 + blk%dnref(2, a, g)*h21
       gr(2, a) = blk%dnref(1, a, g)*h12 + blk%dnref(2, a, g)*h22
@@ -388,7 +536,8 @@ contains
   end subroutine scaled_gradients
 
   !> Element stiffness ke(2 nen, 2 nen) = sum_g c B^T C B (theory eq. 3.2),
-  !> dof order (x1, y1, x2, y2, ...).
+  !> dof order (x1, y1, x2, y2, ...). For Q4 this is the Gauss sum itself,
+  !> not the split the kernel uses, so the tests compare the two.
   pure subroutine element_stiffness(blk, e, ke)
     type(elastic_block_t), intent(in) :: blk
     integer, intent(in) :: e
@@ -418,17 +567,18 @@ contains
     integer, intent(in) :: e
     real(wp), intent(in) :: density
     real(wp), intent(out) :: me(:)
-    real(wp) :: total, dsum
+    real(wp) :: total, dsum, cg
     integer :: g, nen
     nen = blk%nen
     me(1:nen) = 0.0_wp
     total = 0.0_wp
     do g = 1, blk%ngp
-      total = total + density*blk%c(g, e)
+      cg = gauss_c(blk, e, g)
+      total = total + density*cg
       if (blk%etype == ELEM_Q8) then
-        me(1:nen) = me(1:nen) + density*blk%c(g, e)*blk%nref(:, g)**2
+        me(1:nen) = me(1:nen) + density*cg*blk%nref(:, g)**2
       else
-        me(1:nen) = me(1:nen) + density*blk%c(g, e)*blk%nref(:, g)
+        me(1:nen) = me(1:nen) + density*cg*blk%nref(:, g)
       end if
     end do
     if (blk%etype == ELEM_Q8) then
@@ -457,11 +607,13 @@ contains
     real(wp), intent(in) :: b(2)
     real(wp), intent(inout) :: f(:,:)
     integer :: e, g, a, node
+    real(wp) :: cg
     do e = 1, blk%nel
       do g = 1, blk%ngp
+        cg = gauss_c(blk, e, g)
         do a = 1, blk%nen
           node = blk%conn(a, e)
-          f(:, node) = f(:, node) + blk%nref(a, g)*blk%c(g, e)*b
+          f(:, node) = f(:, node) + blk%nref(a, g)*cg*b
         end do
       end do
     end do
@@ -520,7 +672,7 @@ contains
       ue(:, 1:nen) = u(:, blk%conn(:, e))
       do g = 1, blk%ngp
         call scaled_gradients(blk, e, g, gr)
-        rs = 1.0_wp/sqrt(blk%c(g, e))
+        rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
         ! grad u_ij = du_i/dx_j (theory eq. 3.1)
         gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
         tr = blk%lam*(gu(1, 1) + gu(2, 2))
