@@ -1,0 +1,302 @@
+#!/bin/sh
+# Integration tests of the raccord program: one case per CTest entry.
+#
+#   sh program_cases.sh CASE RACCORD DATA_DIR WORK_DIR [EXTRA]
+#
+# CASE      one of the names in the `case` at the bottom
+# RACCORD   the raccord executable
+# DATA_DIR  tests/data/app (scene decks and the coarse bar mesh)
+# WORK_DIR  a folder of this case alone; emptied first, the run's current directory
+# EXTRA     case `version`: the expected version; case `check`: the bar deck
+#
+# Needs only POSIX sh, awk, find, grep and h5dump (Debian hdf5-tools).
+# Exit 0 = pass, 1 = fail (every failed check is printed), 77 = skipped.
+set -u
+
+case_name=$1
+raccord=$2
+data=$3
+work=$4
+extra=${5:-}
+
+failures=0
+fail() {
+  echo "FAIL [$case_name]: $*" >&2
+  failures=$((failures + 1))
+}
+pass() { echo "ok   [$case_name]: $*"; }
+
+# Run raccord with the given arguments in $work; keep exit code, stdout, stderr.
+run() {
+  (cd "$work" && "$raccord" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt")
+  code=$?
+}
+
+expect_code() {
+  if [ "$code" -eq "$1" ]; then pass "exit code $code"; else fail "exit code $code, expected $1"; fi
+}
+
+# expect_text FILE TEXT [what]: FILE contains TEXT (fixed string).
+expect_text() {
+  if grep -qF -- "$2" "$1"; then pass "${3:-$(basename "$1")} has '$2'"
+  else fail "${3:-$(basename "$1")} lacks '$2'"; fi
+}
+
+expect_file() {
+  if [ -s "$1" ]; then pass "file $(basename "$1") written"; else fail "file $1 missing or empty"; fi
+}
+
+# No result file of any kind (final, .part or .incomplete) anywhere in $work.
+expect_no_results() {
+  found=$(find "$work" -type f \( -name '*.h5' -o -name '*.h5.part' -o -name '*.xmf' \
+    -o -name '*.history.txt' -o -name '*.history.txt.part' -o -name '*.incomplete.*' \) -print)
+  if [ -z "$found" ]; then pass "no result file written"; else fail "result files written: $found"; fi
+}
+
+# No file whose name says "complete": no final .h5, .xmf or .history.txt.
+expect_nothing_complete() {
+  found=$(find "$work" -type f \( -name '*.h5' -o -name '*.xmf' -o -name '*.history.txt' \) \
+    ! -name '*.incomplete.*' -print)
+  if [ -z "$found" ]; then pass "no complete-looking result file"; else fail "complete-looking files left: $found"; fi
+}
+
+# h5_status FILE: the string of the dataset /status.
+h5_status() {
+  h5dump -d /status "$1" 2>/dev/null | awk -F'"' '/\(0\):/ { print $2; exit }'
+}
+
+# history_column FILE NAME: the column number of NAME in a history header ('# N name').
+history_column() {
+  awk -v name="$2" '$1 == "#" && $3 == name { print $2; exit }' "$1"
+}
+
+# bad_deck DECK TEXT...: exit 2, each TEXT (where: deck and line, or file;
+# what: key, group, set) on stderr, no result file.
+bad_deck() {
+  deck=$1
+  shift
+  cp "$data/$deck" "$data/bar_coarse.msh" "$work/"
+  run -o out "$deck"
+  expect_code 2
+  for what in "$@"; do expect_text "$work/stderr.txt" "$what" "stderr"; done
+  expect_no_results
+}
+
+rm -rf "$work"
+mkdir -p "$work" || { echo "cannot create $work" >&2; exit 1; }
+
+case "$case_name" in
+help)
+  for opt in --help -h; do
+    run "$opt"
+    expect_code 0
+    expect_text "$work/stdout.txt" 'usage: raccord [options] SCENE' "stdout of $opt"
+    for word in --check --output --quiet --verbose --version 'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure'; do
+      expect_text "$work/stdout.txt" "$word" "stdout of $opt"
+    done
+  done
+  ;;
+
+version)
+  for opt in --version -V; do
+    run "$opt"
+    expect_code 0
+    line=$(cat "$work/stdout.txt")
+    if [ "$line" = "raccord $extra" ]; then pass "$opt prints '$line'"
+    else fail "$opt prints '$line', expected 'raccord $extra'"; fi
+  done
+  ;;
+
+usage_errors)
+  # Each bad command line exits 1, names the problem on stderr and writes nothing.
+  run
+  expect_code 1
+  expect_text "$work/stderr.txt" 'no scene given' "stderr (no argument)"
+  run --frobnicate "$data/bar_coarse.nml"
+  expect_code 1
+  expect_text "$work/stderr.txt" "unknown option '--frobnicate'" "stderr (unknown option)"
+  run "$data/bar_coarse.nml" "$data/bar_coarse.nml"
+  expect_code 1
+  expect_text "$work/stderr.txt" 'one scene per run' "stderr (two scenes)"
+  run "$data/bar_coarse.nml" --output
+  expect_code 1
+  expect_text "$work/stderr.txt" "option --output needs a folder" "stderr (--output without folder)"
+  left=$(find "$work" -mindepth 1 ! -name stdout.txt ! -name stderr.txt -print)
+  if [ -z "$left" ]; then pass "nothing written"; else fail "files written: $left"; fi
+  ;;
+
+check)
+  # --check on the shipped bar example, run from an empty folder: the plan,
+  # the effects, the cost and the resolved scene on stdout; no result file
+  # and no output folder (the deck's default output_dir is results/bar_wave).
+  run --check "$extra"
+  expect_code 0
+  out=$work/stdout.txt
+  expect_text "$out" 'mesh    '
+  expect_text "$out" '505 nodes, 400 elements'
+  expect_text "$out" 'body    bar: 400 elements (Q4)'
+  expect_text "$out" 'effects elasticity (400 Q4 + 0 Q8), supports (10 dofs), surface loads (1), contact pairs: none'
+  expect_text "$out" 'cost    about '
+  expect_text "$out" 'estimated run time'
+  # The resolved scene: every key with its value, the mesh path made absolute.
+  expect_text "$out" '! Scene resolved by raccord'
+  expect_text "$out" "output_dir = 'results/bar_wave'"
+  expect_text "$out" 'input/examples/bar.msh'
+  expect_text "$out" "pressure = 100.0"
+  expect_text "$out" 'safety = 0.9'
+  expect_text "$out" 'frames = 30'
+  # The time line: stable dt = h/c for this 1D mesh (h = 1 mm, c = sqrt(E/rho)),
+  # dt = t_end/steps with steps = ceil(t_end/(0.9 dt_stable)) (doc/theory.md, 3).
+  awk '
+    /^time / {
+      for (i = 1; i <= NF; i++) {
+        if ($i == "t_end") t_end = $(i + 2) + 0
+        if ($i == "stable" && $(i + 1) == "dt") dts = $(i + 3) + 0
+        if ($i == "dt" && $(i - 1) != "stable") dt = $(i + 2) + 0
+        if ($i == "steps") steps = $(i - 1) + 0
+      }
+      found = 1
+    }
+    END {
+      if (!found) { print "FAIL: no time line"; exit 1 }
+      bad = 0
+      h_over_c = 1.0 / sqrt(200000.0 / 7.8e-9)
+      if ((dts - h_over_c) ^ 2 > (1e-5 * h_over_c) ^ 2) { print "FAIL: stable dt " dts " is not h/c = " h_over_c; bad = 1 }
+      n = t_end / (0.9 * dts); want = (n == int(n)) ? n : int(n) + 1
+      if (steps != want) { print "FAIL: " steps " steps, expected ceil(t_end/(0.9 dt_stable)) = " want; bad = 1 }
+      if ((dt - t_end / steps) ^ 2 > (1e-5 * dt) ^ 2) { print "FAIL: dt " dt " is not t_end/steps = " t_end / steps; bad = 1 }
+      if (!bad) print "stable dt " dts " = h/c " h_over_c ", " steps " steps, dt " dt
+      exit bad
+    }' "$out" && pass "time line consistent" || fail "time line inconsistent"
+  left=$(find "$work" -mindepth 1 ! -name stdout.txt ! -name stderr.txt -print)
+  if [ -z "$left" ]; then pass "--check wrote nothing"; else fail "--check wrote: $left"; fi
+  ;;
+
+run)
+  # A real run of the coarse bar into a folder given with --output.
+  run --output out "$data/bar_coarse.nml"
+  expect_code 0
+  stem=$work/out/bar_coarse
+  for ext in h5 xmf history.txt log; do expect_file "$stem.$ext"; done
+  left=$(find "$work" -name '*.part' -o -name '*.incomplete*')
+  if [ -z "$left" ]; then pass "no .part or .incomplete file"; else fail "left behind: $left"; fi
+  status=$(h5_status "$stem.h5")
+  if [ "$status" = complete ]; then pass "/status is '$status'"; else fail "/status is '$status', expected 'complete'"; fi
+  expect_text "$stem.xmf" 'bar_coarse.h5:/mesh/x' "the XDMF"
+  expect_text "$stem.log" 'time    t_end = 3e-05' "the log"
+  expect_text "$stem.log" 'info [raccord] done: 34 steps' "the log"
+  expect_text "$work/stdout.txt" "results: out/bar_coarse.h5" "stdout"
+  # History: one row per step (history_every = 1), 34 steps, last time = t_end,
+  # |energy_balance_rel| < 1e-10 on every row, applied force right_Fx = -p H = -1000.
+  hist=$stem.history.txt
+  cb=$(history_column "$hist" energy_balance_rel)
+  ct=$(history_column "$hist" time)
+  cf=$(history_column "$hist" right_Fx)
+  if [ -z "$cb" ] || [ -z "$ct" ] || [ -z "$cf" ]; then
+    fail "history header lacks time, energy_balance_rel or right_Fx"
+  else
+    awk -v cb="$cb" -v ct="$ct" -v cf="$cf" '
+      /^#/ { next }
+      {
+        rows++
+        b = $cb < 0 ? -$cb : $cb
+        if (b > worst) worst = b
+        if (($cf + 1000) ^ 2 > (1e-12 * 1000) ^ 2) badf++
+        last = $ct
+      }
+      END {
+        bad = 0
+        if (rows != 35) { print "FAIL: " rows " history rows, expected 35"; bad = 1 }
+        if (worst >= 1e-10) { print "FAIL: |energy_balance_rel| reaches " worst; bad = 1 }
+        if (badf) { print "FAIL: right_Fx differs from -1000 on " badf " rows"; bad = 1 }
+        if ((last - 3e-5) ^ 2 > (1e-12 * 3e-5) ^ 2) { print "FAIL: last time " last ", expected 3e-5"; bad = 1 }
+        if (!bad) print rows " rows, max |energy_balance_rel| = " worst ", last time " last
+        exit bad
+      }' "$hist" && pass "history checks" || fail "history checks"
+  fi
+  # The HDF5 copy of the history has as many rows as the text file.
+  rows=$(h5dump -H -d /history "$stem.h5" 2>/dev/null | awk -F'[(),]' '/DATASPACE/ { gsub(/ /, "", $2); print $2; exit }')
+  if [ "$rows" = 35 ]; then pass "/history has 35 rows"; else fail "/history has '$rows' rows, expected 35"; fi
+  ;;
+
+quiet)
+  # --quiet: nothing on stdout or stderr; the log still has everything.
+  run --quiet --output out "$data/bar_coarse.nml"
+  expect_code 0
+  if [ ! -s "$work/stdout.txt" ] && [ ! -s "$work/stderr.txt" ]; then pass "silent"
+  else fail "--quiet printed: $(cat "$work/stdout.txt" "$work/stderr.txt")"; fi
+  expect_text "$work/out/bar_coarse.log" 'effects elasticity' "the log"
+  expect_text "$work/out/bar_coarse.log" 'info [raccord] done:' "the log"
+  ;;
+
+bad_unknown_key)   bad_deck bad_unknown_key.nml 'bad_unknown_key.nml:10:' "unknown key 'yong'" ;;
+bad_unknown_group) bad_deck bad_unknown_group.nml 'bad_unknown_group.nml:19:' "unknown group '&material'" ;;
+bad_missing_mesh)  bad_deck bad_missing_mesh.nml "$work/no_such_mesh.msh" 'does not exist' ;;
+bad_unknown_set)   bad_deck bad_unknown_set.nml 'bad_unknown_set.nml' "&boundary #1 (set 'lefft')" 'bar_coarse.msh' ;;
+bad_dt_unstable)   bad_deck bad_dt_unstable.nml 'bad_dt_unstable.nml' '&time dt = 1e-05 exceeds the stable time step' ;;
+
+output_not_creatable)
+  # The output folder would lie under a regular file: exit 4, nothing that
+  # looks like a result (root can write anywhere, so no permission test).
+  : > "$work/plain_file"
+  run --output plain_file/out "$data/bar_coarse.nml"
+  expect_code 4
+  expect_text "$work/stderr.txt" 'plain_file/out' "stderr"
+  expect_nothing_complete
+  expect_no_results
+  ;;
+
+nonfinite)
+  # An amplitude that ramps the pressure to 1e300 within the run: the
+  # displacements overflow. Without floating-point traps the energy guard
+  # stops the run: exit 3, *.incomplete.* files, the reason in /status.
+  cp "$data/nonfinite.nml" "$data/bar_coarse.msh" "$work/"
+  run --output out nonfinite.nml
+  expect_code 3
+  expect_text "$work/stderr.txt" 'non-finite energy at step' "stderr"
+  stem=$work/out/nonfinite
+  for f in "$stem.incomplete.h5" "$stem.incomplete.xmf" "$stem.history.incomplete.txt"; do expect_file "$f"; done
+  expect_nothing_complete
+  left=$(find "$work" -name '*.part')
+  if [ -z "$left" ]; then pass "no .part file"; else fail "left behind: $left"; fi
+  status=$(h5_status "$stem.incomplete.h5")
+  case "$status" in
+    'incomplete: non-finite energy at step'*) pass "/status is '$status'" ;;
+    *) fail "/status is '$status', expected 'incomplete: non-finite energy at step ...'" ;;
+  esac
+  ;;
+
+nonfinite_trapped)
+  # The same scene in a build that traps overflow (Debug): the process dies
+  # on SIGFPE where the overflow happens; it must not leave a file that
+  # looks complete, and what it wrote stays under the .part names.
+  cp "$data/nonfinite.nml" "$data/bar_coarse.msh" "$work/"
+  run --output out nonfinite.nml
+  if [ "$code" -ne 0 ]; then pass "exit code $code (non-zero)"; else fail "exit code 0 for an overflowing run"; fi
+  expect_nothing_complete
+  expect_file "$work/out/nonfinite.h5.part"
+  ;;
+
+huge_values)
+  # Values of 1e100 and above are legal reals in a deck; the report must
+  # print them (the plan's load line shows -1e+151 for this scene).
+  cp "$data/huge_pressure.nml" "$data/bar_coarse.msh" "$work/"
+  run --check huge_pressure.nml
+  expect_code 0
+  if grep -qE 'total force at amplitude 1 = \(-1(\.0*)?e\+151, 0\)' "$work/stdout.txt"; then pass "load line shows -1e+151"
+  else fail "load line: $(grep '^load' "$work/stdout.txt")"; fi
+  expect_text "$work/stdout.txt" 'pressure = 1.0E+150' "stdout"
+  ;;
+
+*)
+  echo "unknown case '$case_name'" >&2
+  exit 1
+  ;;
+esac
+
+if [ "$failures" -gt 0 ]; then
+  echo "$case_name: $failures check(s) failed (work folder $work)" >&2
+  exit 1
+fi
+echo "$case_name: all checks passed"
+exit 0
