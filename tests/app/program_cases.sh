@@ -7,7 +7,8 @@
 # RACCORD   the raccord executable
 # DATA_DIR  tests/data/app (scene decks and the coarse bar mesh)
 # WORK_DIR  a folder of this case alone; emptied first, the run's current directory
-# EXTRA     case `version`: the expected version; case `check`: the bar deck
+# EXTRA     case `version`: the expected version; case `check`: the bar deck;
+#           case `plot_history`: the postproc folder
 #
 # Needs only POSIX sh, awk, find, grep and h5dump (Debian hdf5-tools).
 # Exit 0 = pass, 1 = fail (every failed check is printed), 77 = skipped.
@@ -275,6 +276,31 @@ nonfinite_trapped)
   if [ "$code" -ne 0 ]; then pass "exit code $code (non-zero)"; else fail "exit code 0 for an overflowing run"; fi
   expect_nothing_complete
   expect_file "$work/out/nonfinite.h5.part"
+  ;;
+
+plot_history)
+  # postproc/plot-history.sh on the coarse bar's history: non-empty PNG and
+  # PDF files (checked by their magic bytes); a bad format is refused.
+  command -v gnuplot > /dev/null 2>&1 || { echo "gnuplot not installed: skipped"; exit 77; }
+  run --quiet --output out "$data/bar_coarse.nml"
+  expect_code 0
+  for format in png pdf; do
+    (cd "$work" && sh "$extra/plot-history.sh" out/bar_coarse "$format" > plot.txt 2>&1)
+    code=$?
+    expect_code 0
+    for plot in energy reactions; do
+      f=$work/out/bar_coarse.$plot.$format
+      expect_file "$f"
+      magic=$(od -An -c -N4 "$f" 2>/dev/null | tr -d ' ')
+      case "$format:$magic" in
+        png:211PNG|pdf:%PDF) pass "$(basename "$f") is a $format file" ;;
+        *) fail "$(basename "$f") does not start like a $format file: '$magic'" ;;
+      esac
+    done
+  done
+  (cd "$work" && sh "$extra/plot-history.sh" out/bar_coarse svg > plot.txt 2>&1)
+  code=$?
+  expect_code 2
   ;;
 
 huge_values)
