@@ -1,0 +1,92 @@
+#!/bin/sh
+# Write the decks of the paper scene (Baillet & Sassi 2003, section 4).
+# Every deck shares the same materials, densities, load cycle and damping
+# (doc/scenes.md, section "paper"); they differ by mesh and contact pair.
+set -e
+cd "$(dirname "$0")"
+
+T=2.0e-5        # loading time to maximum indentation (about 40 lowest periods)
+ALPHA=2.5e7     # mass-proportional damping, about 2 omega_1 of the block
+
+# deck NAME MESH TITLE SLAVE MASTER METHOD MULTIPLIER FRICTION
+deck() {
+  cat > "$1.nml" <<EOD
+! Baillet & Sassi (2003), section 4: $3.
+! Disc part (radius 1 mm, E1 = 70000 MPa) driven 0.1581 mm into a block
+! 1.8 x 0.3 mm (E2 = 7000 MPa) and back; plane strain, nu = 0.3.
+! Densities are not in the paper: 2.7e-9 and 1.2e-9 t/mm^3 (aluminium-like,
+! polymer-like); loading time T = $T s against a lowest period of about
+! 5e-7 s (block, 4 x 0.3 mm / sqrt(E2/rho2)) and damping alpha = $ALPHA 1/s
+! make the run quasi-static (doc/scenes.md). Maximum indentation at t = T,
+! which is result frame 20 of 40. Units: mm, s, N, MPa, t/mm^3.
+! Written by make_decks.sh; edit that script, not this file.
+&run
+  title = 'paper: $3'
+/
+&mesh
+  file = '$2'
+/
+&body
+  name = 'disc', elset = 'disc'
+  young = 70000.0, poisson = 0.3, density = 2.7e-9
+  hypothesis = 'plane_strain'
+/
+&body
+  name = 'block', elset = 'block'
+  young = 7000.0, poisson = 0.3, density = 1.2e-9
+  hypothesis = 'plane_strain'
+/
+&amplitude
+  name = 'cycle', time = 0.0, $T, 4.0e-5, value = 0.0, 1.0, 0.0
+/
+&boundary
+  set = 'block_bottom', type = 'fixed', components = 'xy'      ! Gamma_u^2 clamped
+/
+&boundary
+  set = 'disc_top', type = 'displacement', components = 'xy'   ! Gamma_u^1 driven
+  value = 0.0, -0.1581, amplitude = 'cycle'
+/
+&time
+  t_end = 4.0e-5, safety = 0.9, damping = $ALPHA
+/
+&output
+  frames = 40
+/
+&contact_pair
+  slave = '$4', master = '$5'
+  method = '$6', multiplier = '$7', friction = $8
+/
+EOD
+  echo "$1.nml"
+}
+
+F=paper_q4_fine.msh
+# Fig. 1(b): node-to-segment, frictionless, slave on each body in turn
+deck fig1b_nts_slave_block  $F "Fig. 1(b), node-to-segment, slave = block top" block_top disc_arc node_to_segment P1 0.0
+deck fig1b_nts_slave_disc   $F "Fig. 1(b), node-to-segment, slave = disc arc"  disc_arc block_top node_to_segment P1 0.0
+# Fig. 2(a): mortar P1, frictionless, slave on each body
+deck fig2a_mortar_p1_slave_block $F "Fig. 2(a), mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
+deck fig2a_mortar_p1_slave_disc  $F "Fig. 2(a), mortar P1, slave = disc arc"  disc_arc block_top mortar P1 0.0
+# Fig. 2(b): mortar P0 against P1 (P1: fig2a_mortar_p1_slave_block)
+deck fig2b_mortar_p0_slave_block $F "Fig. 2(b), mortar P0, slave = block top" block_top disc_arc mortar P0 0.0
+deck fig2b_mortar_p0_slave_disc  $F "Fig. 2(b), mortar P0, slave = disc arc"  disc_arc block_top mortar P0 0.0
+# Fig. 3: mortar P0 and P1 with Coulomb friction, slave = block top
+for mu in 0.1 0.2 0.5; do
+  tag=$(echo "$mu" | tr -d .)0
+  deck fig3_mortar_p0_mu$tag $F "Fig. 3, mortar P0, mu = $mu, slave = block top" block_top disc_arc mortar P0 $mu
+  deck fig3_mortar_p1_mu$tag $F "Fig. 3, mortar P1, mu = $mu, slave = block top" block_top disc_arc mortar P1 $mu
+done
+# Fig. 4(a): Q4 against Q8 with the same interface node spacing, mortar P1, frictionless
+deck fig4a_q4_mortar_p1 paper_q4.msh "Fig. 4(a), Q4, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
+deck fig4a_q8_mortar_p1 paper_q8.msh "Fig. 4(a), Q8, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
+# Fig. 4(b): Q8, mortar P0 and P1, mu = 0.2
+deck fig4b_q8_mortar_p0_mu020 paper_q8.msh "Fig. 4(b), Q8, mortar P0, mu = 0.2, slave = block top" block_top disc_arc mortar P0 0.2
+deck fig4b_q8_mortar_p1_mu020 paper_q8.msh "Fig. 4(b), Q8, mortar P1, mu = 0.2, slave = block top" block_top disc_arc mortar P1 0.2
+# Regression: the coarse mesh, a few seconds each
+C=paper_q4_coarse.msh
+deck reg_nts_slave_block       $C "regression, coarse, node-to-segment, slave = block top" block_top disc_arc node_to_segment P1 0.0
+deck reg_nts_slave_disc        $C "regression, coarse, node-to-segment, slave = disc arc"  disc_arc block_top node_to_segment P1 0.0
+deck reg_mortar_p1_slave_block $C "regression, coarse, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
+deck reg_mortar_p1_slave_disc  $C "regression, coarse, mortar P1, slave = disc arc"  disc_arc block_top mortar P1 0.0
+deck reg_mortar_p0_slave_block $C "regression, coarse, mortar P0, slave = block top" block_top disc_arc mortar P0 0.0
+deck reg_mortar_p1_mu020       $C "regression, coarse, mortar P1, mu = 0.2, slave = block top" block_top disc_arc mortar P1 0.2
