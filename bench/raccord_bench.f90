@@ -1,47 +1,60 @@
-!> raccord_bench: timings of the hot loops on in-memory structured meshes.
+!> raccord_bench: timings of the explicit time step on in-memory structured
+!> meshes (doc/performance.md).
 !>
-!>   raccord_bench [--type q4|q8|all] [--min-time SECONDS] [NEL ...]
+!>   raccord_bench [--type q4|q8|all] [--min-time SECONDS] [--repeat N] [NEL ...]
 !>
 !> NEL are element counts (1e4, 100000, ...; default 1e4 1e5 1e6), rounded to
-!> a square nx x nx mesh. Each case prints elements, nodes, calls, ns per
-!> element per call and the case's peak memory (VmHWM). Phases are separate
-!> subroutines so further timings (a whole explicit step) slot in as new
-!> bench_* routines called from the case loop.
+!> a square nx x nx mesh. Each case runs two phases:
+!>   1. kernel: add_internal_force alone on one elastic block;
+!>   2. step: a clamped plate model (build_model) marched with the time loop
+!>      of the program: compute_forces, predict_motion, update_energy,
+!>      advance_state (raccord_central_difference).
+!> Each timing is repeated N times (each at least SECONDS long); the line
+!> gives the min and the median in ns per element per call / step, the
+!> step's split into forces / predictor / rest (medians), the peak memory
+!> (VmHWM) of each phase and the relative energy balance after the steps.
 program raccord_bench
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, element_name
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force
-  use raccord_bench_util, only: structured_mesh, wall_time, peak_memory_kib, reset_peak_memory
+  use raccord_model, only: model_t
+  use raccord_state, only: state_t, init_state
+  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_bench_util, only: structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, &
+    median
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   implicit none
 
-  integer, parameter :: max_sizes = 16
-  integer :: nsizes, ntypes, types(2), it, is, stat
+  integer, parameter :: max_sizes = 16, max_repeat = 99
+  integer :: nsizes, ntypes, types(2), it, is, stat, nrep
   integer(i8) :: sizes(max_sizes)
   real(wp) :: min_time
 
-  call parse_command_line(types, ntypes, sizes, nsizes, min_time, stat)
+  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, stat)
   if (stat /= 0) error stop 1
 
-  write(output_unit, '(a)') '# raccord_bench: add_internal_force, one core'
-  write(output_unit, '(a4, a11, a11, a8, a14, a14)') 'type', 'elements', 'nodes', 'calls', &
-    'ns/elem/call', 'VmHWM_MiB'
+  write(output_unit, '(a)') '# raccord_bench: one core; ns per element per call (kernel) / per step (step),'
+  write(output_unit, '(a, i0, a)') '# min and median of ', nrep, ' repetitions; step split: forces / predictor / rest'
+  write(output_unit, '(a4, a9, a9, a7, 4a9, 3a8, 2a9, a7, a10)') 'type', 'elements', 'nodes', 'steps', &
+    'kern_min', 'kern_med', 'step_min', 'step_med', 'forces', 'predict', 'rest', 'MiB_kern', 'MiB_step', &
+    'B/elem', 'balance'
   cases: do it = 1, ntypes
     do is = 1, nsizes
-      call run_case(types(it), sizes(is), min_time)
+      call run_case(types(it), sizes(is), min_time, nrep)
     end do
   end do cases
 
 contains
 
   subroutine usage()
-    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--min-time SECONDS] [NEL ...]'
+    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--min-time SECONDS] [--repeat N] [NEL ...]'
     write(output_unit, '(a)') '  NEL: element counts (default 1e4 1e5 1e6), each rounded to a square mesh'
+    write(output_unit, '(a)') '  --min-time: least duration of one timing (default 0.3 s); --repeat: timings (default 5)'
   end subroutine usage
 
-  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, stat)
-    integer, intent(out) :: types(2), ntypes, nsizes, stat
+  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, stat)
+    integer, intent(out) :: types(2), ntypes, nsizes, nrep, stat
     integer(i8), intent(out) :: sizes(:)
     real(wp), intent(out) :: min_time
     character(len=64) :: arg
@@ -50,7 +63,8 @@ contains
     types = [ELEM_Q4, ELEM_Q8]
     ntypes = 2
     nsizes = 0
-    min_time = 1.0_wp
+    min_time = 0.3_wp
+    nrep = 5
     stat = 0
     nargs = command_argument_count()
     k = 0
@@ -83,6 +97,15 @@ contains
           stat = 1
           return
         end if
+      case ('--repeat')
+        k = k + 1
+        call get_command_argument(k, arg)
+        read(arg, *, iostat=ios) nrep
+        if (ios /= 0 .or. nrep < 1 .or. nrep > max_repeat) then
+          write(error_unit, '(a)') 'raccord_bench: --repeat takes an integer in 1..99, got "' // trim(arg) // '"'
+          stat = 1
+          return
+        end if
       case default
         read(arg, *, iostat=ios) v
         if (ios /= 0 .or. .not. (v >= 1.0_wp) .or. nsizes >= size(sizes)) then
@@ -101,17 +124,21 @@ contains
     end if
   end subroutine parse_command_line
 
-  !> Build the mesh and the block of one case, then time its phases.
-  subroutine run_case(etype, nel_wanted, min_time)
-    integer, intent(in) :: etype
+  !> One case: the mesh, the kernel phase on a block, then the step phase
+  !> on a model built from the same mesh; one output line.
+  subroutine run_case(etype, nel_wanted, min_time, nrep)
+    integer, intent(in) :: etype, nrep
     integer(i8), intent(in) :: nel_wanted
     real(wp), intent(in) :: min_time
-    type(elastic_block_t) :: blk
+    type(elastic_block_t), allocatable :: blk
+    type(model_t) :: model
     type(error_t) :: err
     real(wp), allocatable :: x(:,:)
     integer, allocatable :: conn(:,:)
-    integer :: nx, stat, calls
-    real(wp) :: ns
+    integer :: nx, stat, nel, nnode
+    integer(i8) :: steps
+    real(wp) :: kern(max_repeat), step(max_repeat), split(3, max_repeat), mem_kern, mem_step, balance
+
     call reset_peak_memory()
     nx = max(1, nint(sqrt(real(nel_wanted, wp))))
     call structured_mesh(etype, nx, nx, x, conn, stat)
@@ -119,43 +146,118 @@ contains
       write(error_unit, '(a)') 'raccord_bench: cannot allocate a mesh of ' // element_name(etype) // ' elements'
       return
     end if
-    call init_elastic_block(blk, etype, conn, x, 2.1e5_wp, 0.3_wp, .false., 1.0_wp, err)
+    nel = size(conn, 2)
+    nnode = size(x, 2)
+
+    ! phase 1: the kernel alone
+    allocate(blk)
+    call init_elastic_block(blk, etype, conn, x, 2.1e11_wp, 0.3_wp, .false., 1.0_wp, err)
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    deallocate(conn)
-    call bench_internal_force(blk, x, min_time, calls, ns)
-    write(output_unit, '(a4, i11, i11, i8, f14.2, f14.1)') element_name(etype), blk%nel, size(x, 2), calls, ns, &
-      real(peak_memory_kib(), wp)/1024.0_wp
+    call bench_internal_force(blk, x, min_time, nrep, kern)
+    mem_kern = real(peak_memory_kib(), wp)/1024.0_wp
+    deallocate(blk)
+
+    ! phase 2: whole steps of the plate model
+    call reset_peak_memory()
+    call plate_model(etype, x, conn, model, err)
+    if (err%failed()) then
+      write(error_unit, '(a)') 'raccord_bench: ' // err%message
+      return
+    end if
+    call bench_step(model, min_time, nrep, steps, step, split, balance)
+    mem_step = real(peak_memory_kib(), wp)/1024.0_wp
+
+    write(output_unit, '(a4, i9, i9, i7, 4f9.1, 3f8.1, 2f9.1, f7.0, es10.1)') element_name(etype), nel, &
+      nnode, steps, minval(kern(1:nrep)), median(kern(1:nrep)), minval(step(1:nrep)), median(step(1:nrep)), &
+      median(split(1, 1:nrep)), median(split(2, 1:nrep)), median(split(3, 1:nrep)), mem_kern, mem_step, &
+      mem_kern*1048576.0_wp/real(nel, wp), balance
     flush(output_unit)
   end subroutine run_case
 
-  !> Time add_internal_force: repeat until min_time has passed (at least 3
-  !> calls after one warm-up call); ns per element per call.
-  subroutine bench_internal_force(blk, x, min_time, calls, ns)
+  !> Time add_internal_force (f zeroed each call, as compute_forces does):
+  !> nrep timings, each repeating the call until min_time has passed (at
+  !> least 3 calls, after one warm-up call); ns per element per call.
+  subroutine bench_internal_force(blk, x, min_time, nrep, ns)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: x(:,:), min_time
-    integer, intent(out) :: calls
-    real(wp), intent(out) :: ns
+    integer, intent(in) :: nrep
+    real(wp), intent(out) :: ns(:)
     real(wp), allocatable :: u(:,:), f(:,:)
     real(wp) :: t0, t
+    integer :: calls, r
     allocate(u(2, size(x, 2)), f(2, size(x, 2)))
     u(1, :) = 1.0e-3_wp*sin(x(1, :) + 0.3_wp*x(2, :))
     u(2, :) = 1.0e-3_wp*cos(0.7_wp*x(1, :) - x(2, :))
     f = 0.0_wp
     call add_internal_force(blk, u, f)
-    calls = 0
-    t0 = wall_time()
-    do
-      f = 0.0_wp
-      call add_internal_force(blk, u, f)
-      calls = calls + 1
-      t = wall_time() - t0
-      if (calls >= 3 .and. t >= min_time) exit
-    end do
+    repetitions: do r = 1, nrep
+      calls = 0
+      t0 = wall_time()
+      do
+        f = 0.0_wp
+        call add_internal_force(blk, u, f)
+        calls = calls + 1
+        t = wall_time() - t0
+        if (calls >= 3 .and. t >= min_time) exit
+      end do
+      ns(r) = 1.0e9_wp*t/(real(calls, wp)*real(blk%nel, wp))
+    end do repetitions
     ! keep the result alive so the calls cannot be optimised away
     if (.not. (abs(sum(f)) < huge(1.0_wp))) write(output_unit, '(a)') '# non-finite internal force'
-    ns = 1.0e9_wp*t/(real(calls, wp)*real(blk%nel, wp))
   end subroutine bench_internal_force
+
+  !> March the model at 0.9 of the stable step with the program's step
+  !> sequence: nrep timings of at least min_time each (at least 3 steps);
+  !> ns per element per step in total and split into compute_forces,
+  !> predict_motion and update_energy + advance_state. balance: the
+  !> relative energy balance at the end (round-off for this undamped
+  !> linear model, so a wrong kernel shows up here).
+  subroutine bench_step(model, min_time, nrep, steps, ns, split, balance)
+    type(model_t), intent(in) :: model
+    real(wp), intent(in) :: min_time
+    integer, intent(in) :: nrep
+    integer(i8), intent(out) :: steps
+    real(wp), intent(out) :: ns(:), split(:,:), balance
+    type(state_t) :: state
+    real(wp) :: t0, t1, t2, t3, tf, tp, tr, scale
+    integer :: r, n
+
+    call init_state(model, 0.9_wp*2.0_wp/sqrt(model%w2_bound), 0_i8, state)
+    ! step 0 (as the program's start_march); then each step n is
+    ! forces, predictor and energy at t(n), and the move to n+1
+    call compute_forces(model, state)
+    call predict_motion(model, state)
+    call update_energy(model, state)
+    call advance_state(state)
+    steps = 0
+    repetitions: do r = 1, nrep
+      tf = 0.0_wp
+      tp = 0.0_wp
+      tr = 0.0_wp
+      n = 0
+      time_steps: do
+        t0 = wall_time()
+        call compute_forces(model, state)
+        t1 = wall_time()
+        call predict_motion(model, state)
+        t2 = wall_time()
+        call update_energy(model, state)
+        call advance_state(state)
+        t3 = wall_time()
+        tf = tf + (t1 - t0)
+        tp = tp + (t2 - t1)
+        tr = tr + (t3 - t2)
+        n = n + 1
+        if (n >= 3 .and. tf + tp + tr >= min_time) exit
+      end do time_steps
+      steps = steps + n
+      scale = 1.0e9_wp/(real(n, wp)*real(model%nelem, wp))
+      ns(r) = (tf + tp + tr)*scale
+      split(:, r) = [tf, tp, tr]*scale
+    end do repetitions
+    balance = state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
+  end subroutine bench_step
 end program raccord_bench
