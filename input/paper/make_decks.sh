@@ -7,6 +7,7 @@ cd "$(dirname "$0")"
 
 T=2.0e-5        # loading time to maximum indentation (about 40 lowest periods)
 ALPHA=2.5e7     # mass-proportional damping, about 2 omega_1 of the block
+T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")   # end of the cycle
 
 # deck NAME MESH TITLE SLAVE MASTER METHOD MULTIPLIER FRICTION
 deck() {
@@ -37,7 +38,7 @@ deck() {
   hypothesis = 'plane_strain'
 /
 &amplitude
-  name = 'cycle', time = 0.0, $T, 4.0e-5, value = 0.0, 1.0, 0.0
+  name = 'cycle', time = 0.0, $T, $T2, value = 0.0, 1.0, 0.0
 /
 &boundary
   set = 'block_bottom', type = 'fixed', components = 'xy'      ! Gamma_u^2 clamped
@@ -47,7 +48,7 @@ deck() {
   value = 0.0, -0.1581, amplitude = 'cycle'
 /
 &time
-  t_end = 4.0e-5, safety = 0.9, damping = $ALPHA
+  t_end = $T2, safety = 0.9, damping = $ALPHA
 /
 &output
   frames = 40

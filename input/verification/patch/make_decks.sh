@@ -5,7 +5,7 @@ cd "$(dirname "$0")"
 deck() {  # NAME MESH TITLE SLAVE MASTER METHOD MULTIPLIER
   cat > "$1.nml" <<EOD
 ! Contact patch test: $3.
-! Two blocks 1 x 0.5 mm, same material, non-matching interface (5 : 16
+! Two blocks 1 x 0.5 mm, same material, non-matching interface (5 : 20
 ! elements, graded), frictionless. 10 MPa on the upper top; lower bottom held
 ! in y, one corner of each block held in x, sides free. Exact: uniform
 ! sigma_yy = -10 MPa, sigma_xx = sigma_xy = 0 in both blocks, contact pressure
