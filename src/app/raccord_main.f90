@@ -27,6 +27,7 @@ program raccord_main
   use raccord_time_step, only: time_plan_t, choose_time_step
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
   use raccord_run_report, only: report_plan, report_summary, run_stem
   use raccord_output, only: output_t, open_outputs, write_due_outputs, close_outputs
   use raccord_files, only: make_directory
@@ -39,6 +40,7 @@ program raccord_main
   type(time_plan_t) :: plan
   type(state_t) :: state
   type(output_t) :: out
+  type(contact_pair_t), allocatable :: pairs(:)
   type(error_t) :: err
   character(len=:), allocatable :: stem
 
@@ -69,11 +71,13 @@ program raccord_main
   if (err%failed()) call finish(err)
   call build_model(scene, mesh, model, err)
   if (err%failed()) call finish(err)
+  call init_contact_pairs(scene, mesh, model, pairs, err)    ! slave/master chains (paper section 3)
+  if (err%failed()) call finish(err)
 
   ! Phase 4: the stable time step (dt <= 2/omega_max) and the plan.
   call choose_time_step(scene, model, plan, err)
   if (err%failed()) call finish(err)
-  call report_plan(scene, mesh, model, plan)
+  call report_plan(scene, mesh, model, plan, pairs)
   if (cli%check) then
     call write_scene(scene, output_unit)
     stop
@@ -81,18 +85,21 @@ program raccord_main
 
   ! Phase 5: march in time.
   call init_state(model, plan%dt, plan%nsteps, state)
-  call open_outputs(out, scene, model, plan, stem, err)
+  call open_outputs(out, scene, model, plan, pairs, stem, err)
   if (err%failed()) call finish(err)
   if (model%has_body_force) state%f_ext = model%f_body
 
   time_steps: do
     call compute_forces(model, state)        ! f_int(u(n)), f_ext(t(n))
     call predict_motion(model, state)        ! (CD-1), (CD-2): v(n+1/2), u*(n+1); reactions
-    ! Contact enters here: multipliers lambda(n) that enforce the contact and
-    ! friction conditions (paper eq. 19) at t(n+1) correct u(n+1), v(n+1/2).
+    ! Forward increment: the multipliers lambda(n) make the contact and
+    ! friction conditions (paper eq. 19) hold at t(n+1); u(n+1) and v(n+1/2)
+    ! are corrected. A scene without contact pairs skips it.
+    if (size(pairs) > 0) call enforce_contact(pairs, model, state, err)
+    if (err%failed()) call finish(err)
     call update_energy(model, state)         ! energy account at t(n)
     call guard_finite()
-    call write_due_outputs(out, model, state, err)
+    call write_due_outputs(out, model, state, pairs, err)
     if (err%failed()) call finish(err)
     if (state%step == state%nsteps) exit time_steps
     call advance_state(state)                ! n <- n+1
@@ -101,7 +108,7 @@ program raccord_main
   ! Phase 6: close the results under their final names.
   call close_outputs(out, .true., '', err)
   if (err%failed()) call finish(err)
-  call report_summary(model, state, out)
+  call report_summary(model, state, out, pairs)
   call log_close()
 
 contains

@@ -2,7 +2,7 @@
 !> time-history table (plain text and HDF5), progress lines in the log.
 module raccord_output
   use raccord_kinds, only: wp, i8
-  use raccord_error, only: error_t, raise_error
+  use raccord_error, only: error_t, raise_error, EXIT_IO
   use raccord_log, only: log_info, log_raw
   use raccord_strings, only: str
   use raccord_mesh, only: nodes_per_element
@@ -15,6 +15,10 @@ module raccord_output
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
     results_write_table, results_set_text, results_close
   use raccord_history_file, only: history_file_t, history_open, history_write, history_close
+  use raccord_contact_pair, only: contact_pair_t
+  use raccord_multiplier_solver, only: ST_OPEN
+  use raccord_results, only: results_write_array
+  use raccord_files, only: rename_file
   implicit none
   private
 
@@ -36,6 +40,8 @@ module raccord_output
     real(wp), allocatable :: s_node(:,:), wsum(:), r_node(:,:)   !< frame scratch, sized once
     integer(i8) :: clock_start = 0, clock_rate = 1, clock_last = 0
     real(wp) :: progress_seconds = 10.0_wp
+    integer, allocatable :: profile_unit(:)     !< per contact pair: text profiles, one block per frame
+    character(len=:), allocatable :: profile_path
   end type output_t
 
   public :: open_outputs, write_due_outputs, close_outputs, wall_seconds
@@ -43,11 +49,12 @@ module raccord_output
 contains
 
   !> Create the result files (under temporary names) and write the mesh.
-  subroutine open_outputs(out, scene, model, plan, stem, err)
+  subroutine open_outputs(out, scene, model, plan, pairs, stem, err)
     type(output_t), intent(out) :: out
     type(scene_t), intent(in) :: scene
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
     type(error_t), intent(inout) :: err
     type(result_block_t), allocatable :: blocks(:)
@@ -59,7 +66,7 @@ contains
     out%progress_seconds = scene%output%progress_seconds
     out%history_every = int(scene%output%history_every, i8)
     if (out%history_every <= 0) out%history_every = max(1_i8, plan%nsteps/1000_i8)
-    call history_columns(model, out%columns)
+    call history_columns(model, pairs, out%columns)
     allocate(out%row(size(out%columns)))
     nrow_max = int(plan%nsteps/out%history_every) + 3
     allocate(out%table(size(out%columns), nrow_max))
@@ -93,14 +100,17 @@ contains
     if (err%failed()) return
     call history_open(out%hist, stem // '.history.txt', out%columns, err)
     if (err%failed()) return
+    call open_profiles(out, pairs, err)
+    if (err%failed()) return
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
   end subroutine open_outputs
 
   !> Column names of the history: energies, then reaction and mean
   !> displacement per support, then total applied force per surface load.
-  subroutine history_columns(model, cols)
+  subroutine history_columns(model, pairs, cols)
     type(model_t), intent(in) :: model
+    type(contact_pair_t), intent(in) :: pairs(:)
     character(len=col_len), allocatable, intent(out) :: cols(:)
     character(len=col_len), allocatable :: extra(:)
     integer :: k
@@ -118,21 +128,63 @@ contains
       end associate
       cols = [cols, extra]
     end do
+    ! Per contact pair: force on the slave body, sums of nodal normal and
+    ! tangential forces, active and slipping nodes, solver iterations.
+    do k = 1, size(pairs)
+      associate (s => 'contact' // str(k))
+        extra = [character(len=col_len) :: s // '_Fx', s // '_Fy', s // '_N', s // '_T', s // '_active', &
+          s // '_slip', s // '_iterations']
+      end associate
+      cols = [cols, extra]
+    end do
   end subroutine history_columns
+
+  !> One text file per contact pair, <stem>.contact<k>.txt: a block per
+  !> frame (gnuplot `index`), a line per slave node.
+  subroutine open_profiles(out, pairs, err)
+    type(output_t), intent(inout) :: out
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(error_t), intent(inout) :: err
+    integer :: k, ios
+    character(len=256) :: msg
+    allocate(out%profile_unit(size(pairs)))
+    do k = 1, size(pairs)
+      open(newunit=out%profile_unit(k), file=profile_name(out, k) // '.part', status='replace', &
+        action='write', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call raise_error(err, EXIT_IO, 'cannot write ' // profile_name(out, k) // '.part: ' // trim(msg))
+        return
+      end if
+      write(out%profile_unit(k), '(a)') '# raccord contact profile, pair ' // str(k) // ': slave ' // &
+        pairs(k)%slave%name // ', master ' // pairs(k)%master%name
+      write(out%profile_unit(k), '(a)') '# one block per frame (gnuplot: index k); stresses = weighted ' // &
+        'multiplier / tributary length, pressure positive in compression'
+      write(out%profile_unit(k), '(a)') '# columns: 1 s0 (reference arc length)  2 x  3 y  4 gap  ' // &
+        '5 pressure  6 shear  7 status (0 open, 1 stick, 2 slip)  8 slip_increment  9 lambda_n  10 lambda_t'
+    end do
+  end subroutine open_profiles
+
+  function profile_name(out, k) result(path)
+    type(output_t), intent(in) :: out
+    integer, intent(in) :: k
+    character(len=:), allocatable :: path
+    path = out%stem // '.contact' // str(k) // '.txt'
+  end function profile_name
 
   !> History line, result frame and progress line when they are due at the
   !> state's step (always at the first and last step).
-  subroutine write_due_outputs(out, model, state, err)
+  subroutine write_due_outputs(out, model, state, pairs, err)
     type(output_t), intent(inout) :: out
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
+    type(contact_pair_t), intent(in) :: pairs(:)
     type(error_t), intent(inout) :: err
     logical :: last
     integer(i8) :: now
 
     last = state%step == state%nsteps
     if (mod(state%step, out%history_every) == 0 .or. last) then
-      call fill_history_row(out, model, state)
+      call fill_history_row(out, model, state, pairs)
       call history_write(out%hist, out%row, err)
       if (err%failed()) return
       if (out%nrow < size(out%table, 2)) then
@@ -142,7 +194,7 @@ contains
     end if
     ! Frame k is due at the first step whose time reaches k * interval.
     if (state%time >= (real(out%frames_written, wp) - 1.0e-9_wp)*out%frame_interval .or. last) then
-      call write_frame(out, model, state, err)
+      call write_frame(out, model, state, pairs, err)
       if (err%failed()) return
     end if
     call system_clock(now)
@@ -152,10 +204,11 @@ contains
     end if
   end subroutine write_due_outputs
 
-  subroutine fill_history_row(out, model, state)
+  subroutine fill_history_row(out, model, state, pairs)
     type(output_t), intent(inout) :: out
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
+    type(contact_pair_t), intent(in) :: pairs(:)
     integer :: k, j, col
     real(wp) :: r(2), a
     associate (e => state%energy, row => out%row)
@@ -177,15 +230,21 @@ contains
         row(col+1:col+2) = a*sum(model%loads(k)%force, dim=2)
         col = col + 2
       end do
+      do k = 1, size(pairs)
+        row(col+1:col+7) = [pairs(k)%force(1), pairs(k)%force(2), pairs(k)%normal_sum, pairs(k)%tangent_sum, &
+          real(pairs(k)%nactive, wp), real(pairs(k)%nslip, wp), real(pairs(k)%iterations, wp)]
+        col = col + 7
+      end do
     end associate
   end subroutine fill_history_row
 
   !> One result frame at t(n): displacement, velocity v(n), reactions, and
   !> nodal stress averaged over the elements around each node.
-  subroutine write_frame(out, model, state, err)
+  subroutine write_frame(out, model, state, pairs, err)
     type(output_t), intent(inout) :: out
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
+    type(contact_pair_t), intent(in) :: pairs(:)
     type(error_t), intent(inout) :: err
     integer :: ib, k, j
 
@@ -217,8 +276,52 @@ contains
     end if
     call results_end_frame(out%res, err)
     if (err%failed()) return
+    do k = 1, size(pairs)
+      call write_contact_frame(out, k, pairs(k), model, state, err)
+      if (err%failed()) return
+    end do
     out%frames_written = out%frames_written + 1
   end subroutine write_frame
+
+  !> Contact profile of pair k at this frame: HDF5 arrays under
+  !> /contact/pair_<k>/frame_<n>/ and a block of the text profile.
+  subroutine write_contact_frame(out, k, pair, model, state, err)
+    type(output_t), intent(inout) :: out
+    integer, intent(in) :: k
+    type(contact_pair_t), intent(in) :: pair
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: base
+    character(len=16) :: tag
+    real(wp), allocatable :: xy(:,:), gap(:)
+    integer :: i, p, ios
+    write(tag, '(i6.6)') out%frames_written
+    base = '/contact/pair_' // str(k) // '/frame_' // trim(tag) // '/'
+    allocate(xy(2, pair%slave%nnode), gap(pair%slave%nnode))
+    do i = 1, pair%slave%nnode
+      p = pair%slave%node(i)
+      xy(:, i) = model%x(:, p) + state%u(:, p)
+    end do
+    gap = merge(pair%gap, 0.0_wp, pair%status /= ST_OPEN)
+    call results_write_array(out%res, base // 's0', pair%slave%s0, err)
+    call results_write_array(out%res, base // 'xy', xy, err)
+    call results_write_array(out%res, base // 'pressure', pair%pressure, err)
+    call results_write_array(out%res, base // 'shear', pair%shear, err)
+    call results_write_array(out%res, base // 'status', real(pair%status, wp), err)
+    call results_write_array(out%res, base // 'slip_increment', pair%slip, err)
+    call results_write_array(out%res, base // 'force', pair%force, err)
+    if (err%failed()) return
+    write(out%profile_unit(k), '(a,i0,a,es24.16,a,i0)', iostat=ios) '# frame ', out%frames_written, '  time ', &
+      state%time, '  step ', state%step
+    do i = 1, pair%slave%nnode
+      write(out%profile_unit(k), '(6es24.16,i3,3es24.16)', iostat=ios) pair%slave%s0(i), xy(:, i), &
+        merge(pair%gap(i), 0.0_wp, pair%status(i) /= ST_OPEN), pair%pressure(i), pair%shear(i), pair%status(i), &
+        pair%slip(i), pair%lam_n(i), pair%lam_t(i)
+    end do
+    write(out%profile_unit(k), '(/)', iostat=ios)
+    if (ios /= 0) call raise_error(err, EXIT_IO, 'cannot write ' // profile_name(out, k) // '.part')
+  end subroutine write_contact_frame
 
   subroutine log_progress(out, state)
     type(output_t), intent(in) :: out
@@ -269,10 +372,27 @@ contains
     ok = ok .and. .not. e2%failed()
     call results_close(out%res, ok, e3, reason)
     ok = ok .and. .not. e3%failed()
+    call close_profiles(out, ok, e3)
     if (e1%failed()) call raise_error(err, e1%code, e1%message)
     if (e2%failed()) call raise_error(err, e2%code, e2%message)
     if (e3%failed()) call raise_error(err, e3%code, e3%message)
     if (ok) call log_raw('results: ' // out%stem // '.h5, ' // out%stem // &
       '.xmf (ParaView), ' // out%stem // '.history.txt (gnuplot)')
   end subroutine close_outputs
+
+  !> Close the profile files: final name when complete, *.incomplete.txt otherwise.
+  subroutine close_profiles(out, complete, err)
+    type(output_t), intent(inout) :: out
+    logical, intent(in) :: complete
+    type(error_t), intent(inout) :: err
+    integer :: k
+    character(len=:), allocatable :: final
+    if (.not. allocated(out%profile_unit)) return
+    do k = 1, size(out%profile_unit)
+      close(out%profile_unit(k))
+      final = profile_name(out, k)
+      if (.not. complete) final = out%stem // '.contact' // str(k) // '.incomplete.txt'
+      call rename_file(profile_name(out, k) // '.part', final, err)
+    end do
+  end subroutine close_profiles
 end module raccord_output

@@ -12,6 +12,8 @@ module raccord_run_report
   use raccord_time_step, only: time_plan_t
   use raccord_central_difference, only: compute_forces, predict_motion
   use raccord_output, only: output_t, wall_seconds
+  use raccord_contact_pair, only: contact_pair_t
+  use raccord_scene, only: METHOD_NTS
   implicit none
   private
 
@@ -33,11 +35,12 @@ contains
   end function run_stem
 
   !> The model, its effects and the time plan, with a measured cost estimate.
-  subroutine report_plan(scene, mesh, model, plan)
+  subroutine report_plan(scene, mesh, model, plan, pairs)
     type(scene_t), intent(in) :: scene
     type(mesh_t), intent(in) :: mesh
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
     integer :: ib, k, nq4, nq8
     real(wp) :: per_step, c
     character(len=:), allocatable :: effects
@@ -84,7 +87,19 @@ contains
     if (model%has_loads) effects = effects // ', surface loads (' // str(size(model%loads)) // ')'
     if (model%has_body_force) effects = effects // ', body force'
     if (model%has_damping) effects = effects // ', mass damping (alpha = ' // str(model%damping, 4) // ')'
-    effects = effects // ', contact pairs: none'
+    do k = 1, size(pairs)
+      call log_raw('contact pair ' // str(k) // ': slave ' // pairs(k)%slave%name // ' (' // &
+        str(pairs(k)%slave%nnode) // ' nodes), master ' // pairs(k)%master%name // ' (' // &
+        str(pairs(k)%master%nseg) // ' segments), ' // merge('node-to-segment', 'mortar         ', &
+        pairs(k)%method == METHOD_NTS) // ', mu = ' // str(pairs(k)%mu, 4) // ', search distance ' // &
+        str(pairs(k)%reach, 4))
+    end do
+    if (size(pairs) == 0) then
+      effects = effects // ', contact pairs: none'
+    else
+      effects = effects // ', contact pairs: ' // str(size(pairs))
+      if (any(pairs%mu > 0.0_wp)) effects = effects // ' (with friction)'
+    end if
     call log_raw('effects ' // effects)
 
     call log_raw('time    t_end = ' // str(plan%t_end, 6) // ', stable dt = ' // str(plan%dt_stable, 6) // &
@@ -129,11 +144,14 @@ contains
   end function measure_step_seconds
 
   !> Wall time, speed and the final energy balance.
-  subroutine report_summary(model, state, out)
+  subroutine report_summary(model, state, out, pairs)
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
     type(output_t), intent(in) :: out
-    real(wp) :: wall
+    type(contact_pair_t), intent(in) :: pairs(:)
+    real(wp) :: wall, rate, tb, ts
+    integer(i8) :: cnt
+    integer :: k
     wall = wall_seconds(out)
     call log_info('raccord', 'done: ' // str(state%step) // ' steps in ' // str(wall, 4) // ' s (' // &
       str(1.0e9_wp*wall/real(max(1_i8, state%step + 1), wp)/real(max(1, model%nelem), wp), 3) // &
@@ -142,5 +160,18 @@ contains
       str(state%energy%internal, 6) // ', external work ' // str(state%energy%external, 6) // &
       ', damping ' // str(state%energy%damping, 6) // '; balance error ' // str(state%energy%balance, 3) // &
       ' (' // str(state%energy%balance/max(state%energy%scale, tiny(1.0_wp)), 3) // ' of the largest energy)')
+    if (size(pairs) > 0) call log_info('raccord', 'contact work ' // str(state%energy%contact, 6) // &
+      ' (of which friction ' // str(state%energy%friction, 6) // ')')
+    call system_clock(cnt, rate)
+    do k = 1, size(pairs)
+      tb = real(pairs(k)%clock_build, wp)/rate
+      ts = real(pairs(k)%clock_solve, wp)/rate
+      call log_info('raccord', 'contact pair ' // str(k) // ' (' // pairs(k)%name // '): search and matching ' // &
+        str(tb, 3) // ' s (' // str(100.0_wp*tb/max(wall, tiny(1.0_wp)), 3) // ' %), multiplier solve ' // &
+        str(ts, 3) // ' s (' // str(100.0_wp*ts/max(wall, tiny(1.0_wp)), 3) // ' %); ' // &
+        str(real(pairs(k)%iterations_total, wp)/real(max(1_i8, pairs(k)%steps), wp), 3) // &
+        ' active-set iterations per step, largest residual ' // str(pairs(k)%residual_max, 3) // ', ' // &
+        str(pairs(k)%failed_total) // ' unconverged steps')
+    end do
   end subroutine report_summary
 end module raccord_run_report

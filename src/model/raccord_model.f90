@@ -56,6 +56,8 @@ module raccord_model
     real(wp), allocatable :: x(:,:)                    !< (2, nnode) reference coordinates
     real(wp), allocatable :: mass(:)                   !< lumped nodal mass
     real(wp), allocatable :: minv(:)                   !< 1/mass, 0 on nodes in no body
+    real(wp), allocatable :: minv_dof(:,:)             !< (2, nnode) 1/mass per dof, 0 where motion is prescribed
+    integer, allocatable :: dof_cdof(:,:)              !< (2, nnode) index in the cdof_* lists, 0 if free
     integer, allocatable :: node_body(:)               !< body of each node (0: none)
     type(body_t), allocatable :: bodies(:)
     type(amplitude_t), allocatable :: amplitudes(:)

@@ -188,6 +188,15 @@ contains
     model%cdof_node = cnode
     model%cdof_comp = ccomp
     model%cdof_support = csup
+    ! Prescribed dofs are infinitely massive for the contact correction.
+    allocate(model%minv_dof(2, mesh%nnode), model%dof_cdof(2, mesh%nnode))
+    model%minv_dof(1, :) = model%minv
+    model%minv_dof(2, :) = model%minv
+    model%dof_cdof = 0
+    do k = 1, model%ncdof
+      model%minv_dof(ccomp(k), cnode(k)) = 0.0_wp
+      model%dof_cdof(ccomp(k), cnode(k)) = k
+    end do
     model%has_supports = model%ncdof > 0
     model%has_loads = nload > 0
   end subroutine build_boundaries

@@ -138,11 +138,19 @@ contains
     ! the nodes it moves.
     state%energy%discrete = 0.5_wp*(kh + cross)
     if (model%has_damping) then
-      ! Dissipation of the semi-implicit damping term over the step: alpha h v(n)' M v(n).
+      ! Dissipation of the semi-implicit damping term over the step:
+      ! alpha h v' M v with v the mean of the two half-step velocities
+      ! (on the first half step, of v(0) and v(1/2)).
       ke = 0.0_wp
-      do i = 1, model%nnode
-        ke = ke + model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
-      end do
+      if (first) then
+        do i = 1, model%nnode
+          ke = ke + model%mass(i)*(0.25_wp*sum((model%v0(:, i) + state%v(:, i))**2))
+        end do
+      else
+        do i = 1, model%nnode
+          ke = ke + model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
+        end do
+      end if
       state%energy%damping = state%energy%damping + model%damping*h*ke
     end if
   end subroutine predict_motion

@@ -8,7 +8,7 @@ module raccord_test_meshes
   implicit none
   private
 
-  public :: rect_mesh
+  public :: rect_mesh, join_meshes
 
 contains
 
@@ -109,6 +109,59 @@ contains
       end do
     end associate
   end subroutine side_surface
+
+  !> Two separate bodies in one mesh: b's nodes and elements follow a's;
+  !> every set of a is renamed '<na>_<name>' and of b '<nb>_<name>'
+  !> (so element sets 'na_body' and 'nb_body').
+  subroutine join_meshes(a, na, b, nb, mesh)
+    type(mesh_t), intent(in) :: a, b
+    character(len=*), intent(in) :: na, nb
+    type(mesh_t), intent(out) :: mesh
+    integer :: k, off, eoff
+    off = a%nnode
+    eoff = a%nelem
+    mesh%source = 'join_meshes'
+    mesh%nnode = a%nnode + b%nnode
+    mesh%nelem = a%nelem + b%nelem
+    mesh%x = reshape([a%x, b%x], [2, mesh%nnode])
+    mesh%node_id = [(k, k = 1, mesh%nnode)]
+    mesh%elem_id = [(k, k = 1, mesh%nelem)]
+    mesh%etype = [a%etype, b%etype]
+    allocate(mesh%conn(8, mesh%nelem))
+    mesh%conn(:, 1:eoff) = a%conn
+    mesh%conn(:, eoff+1:) = merge(b%conn + off, 0, b%conn > 0)
+    allocate(mesh%esets(size(a%esets) + size(b%esets)))
+    allocate(mesh%nsets(size(a%nsets) + size(b%nsets)))
+    allocate(mesh%surfaces(size(a%surfaces) + size(b%surfaces)))
+    do k = 1, size(a%esets)
+      mesh%esets(k)%name = na // '_' // a%esets(k)%name
+      mesh%esets(k)%elems = a%esets(k)%elems
+    end do
+    do k = 1, size(b%esets)
+      mesh%esets(size(a%esets) + k)%name = nb // '_' // b%esets(k)%name
+      mesh%esets(size(a%esets) + k)%elems = b%esets(k)%elems + eoff
+    end do
+    do k = 1, size(a%nsets)
+      mesh%nsets(k)%name = na // '_' // a%nsets(k)%name
+      mesh%nsets(k)%nodes = a%nsets(k)%nodes
+    end do
+    do k = 1, size(b%nsets)
+      mesh%nsets(size(a%nsets) + k)%name = nb // '_' // b%nsets(k)%name
+      mesh%nsets(size(a%nsets) + k)%nodes = b%nsets(k)%nodes + off
+    end do
+    do k = 1, size(a%surfaces)
+      mesh%surfaces(k) = a%surfaces(k)
+      mesh%surfaces(k)%name = na // '_' // a%surfaces(k)%name
+    end do
+    do k = 1, size(b%surfaces)
+      associate (s => mesh%surfaces(size(a%surfaces) + k))
+        s = b%surfaces(k)
+        s%name = nb // '_' // b%surfaces(k)%name
+        s%edge = merge(s%edge + off, 0, s%edge > 0)
+        s%elem = s%elem + eoff
+      end associate
+    end do
+  end subroutine join_meshes
 
   function unique_nodes(s) result(nodes)
     type(surface_t), intent(in) :: s

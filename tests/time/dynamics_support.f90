@@ -3,14 +3,16 @@
 module dynamics_support
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t
-  use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_PRESSURE
+  use raccord_scene, only: scene_t, bc_spec_t, body_spec_t, amplitude_spec_t, contact_spec_t
   use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_contact_pair, only: contact_pair_t, enforce_contact
   implicit none
   private
 
-  public :: one_body_scene, add_bc, start_march, march_to, march_steps
+  public :: one_body_scene, add_bc, add_amplitude, add_body, add_pair, start_march, march_to, march_steps
+  public :: contact_step
 
 contains
 
@@ -35,20 +37,68 @@ contains
   end subroutine one_body_scene
 
   !> Append a boundary condition.
-  subroutine add_bc(scene, set, kind, comp, pressure)
+  subroutine add_bc(scene, set, kind, comp, pressure, value, amplitude)
     type(scene_t), intent(inout) :: scene
     character(len=*), intent(in) :: set
     integer, intent(in) :: kind
     logical, intent(in), optional :: comp(2)
-    real(wp), intent(in), optional :: pressure
+    real(wp), intent(in), optional :: pressure, value(2)
+    character(len=*), intent(in), optional :: amplitude
     type(bc_spec_t) :: bc
     bc%set = set
     bc%kind = kind
     bc%amplitude = ''
     if (present(comp)) bc%comp = comp
     if (present(pressure)) bc%pressure = pressure
+    if (present(value)) bc%value = value
+    if (present(amplitude)) bc%amplitude = amplitude
     scene%bcs = [scene%bcs, bc]
   end subroutine add_bc
+
+  !> Append a piecewise-linear amplitude table.
+  subroutine add_amplitude(scene, name, t, a)
+    type(scene_t), intent(inout) :: scene
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: t(:), a(:)
+    type(amplitude_spec_t) :: amp
+    amp%name = name
+    amp%npoint = size(t)
+    amp%t = t
+    amp%a = a
+    scene%amplitudes = [scene%amplitudes, amp]
+  end subroutine add_amplitude
+
+  !> Append a body on element set `elset`.
+  subroutine add_body(scene, name, elset, young, poisson, density, plane_stress, velocity)
+    type(scene_t), intent(inout) :: scene
+    character(len=*), intent(in) :: name, elset
+    real(wp), intent(in) :: young, poisson, density
+    logical, intent(in) :: plane_stress
+    real(wp), intent(in), optional :: velocity(2)
+    type(body_spec_t) :: b
+    b%name = name
+    b%elset = elset
+    b%young = young
+    b%poisson = poisson
+    b%density = density
+    b%plane_stress = plane_stress
+    if (present(velocity)) b%velocity = velocity
+    scene%bodies = [scene%bodies, b]
+  end subroutine add_body
+
+  !> Append a contact pair.
+  subroutine add_pair(scene, slave, master, method, friction)
+    type(scene_t), intent(inout) :: scene
+    character(len=*), intent(in) :: slave, master
+    integer, intent(in) :: method
+    real(wp), intent(in) :: friction
+    type(contact_spec_t) :: c
+    c%slave = slave
+    c%master = master
+    c%method = method
+    c%friction = friction
+    scene%contacts = [scene%contacts, c]
+  end subroutine add_pair
 
   !> One step of the explicit scheme, as in the main program.
   subroutine one_step(model, state)
@@ -58,6 +108,19 @@ contains
     call predict_motion(model, state)
     call update_energy(model, state)
   end subroutine one_step
+
+  !> One step with contact at t(n), as in the main program (the caller
+  !> advances the state to n+1 between calls).
+  subroutine contact_step(model, pairs, state, err)
+    type(model_t), intent(in) :: model
+    type(contact_pair_t), intent(inout) :: pairs(:)
+    type(state_t), intent(inout) :: state
+    type(error_t), intent(inout) :: err
+    call compute_forces(model, state)
+    call predict_motion(model, state)
+    call enforce_contact(pairs, model, state, err)
+    call update_energy(model, state)
+  end subroutine contact_step
 
   !> Step 0: forces, predictor and energies at t = 0.
   subroutine start_march(model, state)

@@ -1,0 +1,140 @@
+!> The contact constraints of one pair at one step, as built by a matching
+!> method (node-to-segment, mortar) and consumed by the multiplier solver.
+!>
+!> One constraint j per multiplier node of the slave surface (paper
+!> section 3: m slave nodes). Its row is a list of (node p, weight w_jp)
+!> with w = -G1(i, j) on slave nodes i and w = +G21(a, j) on master nodes a,
+!> so that, with n_j the normal at j pointing from the slave into the master
+!> and t_j the tangent (n_j turned clockwise):
+!>   weighted gap    g_w(j) = sum_p w_jp x_p . n_j      (>= 0: open)
+!>   weighted slip   s_w(j) = sum_p w_jp du_p . t_j     (master relative to slave)
+!>   contact force   f_p    = sum_j w_jp (lambda_j n_j + tau_j t_j)
+!> and the paper's conditions (19) bear on the nodal gap G1^-1 g_w and the
+!> weighted multipliers G1 lambda. Node-to-segment is the case G1 = I.
+module raccord_constraint_set
+  use raccord_kinds, only: wp
+  implicit none
+  private
+
+  integer, parameter, public :: G1_MAX_BAND = 2   !< half bandwidth of G1 kept (P0/P1 on Q4 or Q8 edges)
+
+  type, public :: constraint_set_t
+    integer :: m = 0                          !< constraints this step
+    integer, allocatable :: snode(:)          !< index in the slave surface's node list
+    integer, allocatable :: gnode(:)          !< global node index
+    real(wp), allocatable :: normal(:,:)      !< (2, m) slave -> master
+    real(wp), allocatable :: tangent(:,:)     !< (2, m) normal turned clockwise
+    integer :: g1_band = 0                    !< half bandwidth of G1 this step
+    real(wp), allocatable :: g1(:,:)          !< (-G1_MAX_BAND:G1_MAX_BAND, m): g1(d, j) = G1(j+d, j)
+    integer, allocatable :: row_ptr(:)        !< (m+1) start of each row's entries
+    integer :: nent = 0
+    integer, allocatable :: ent_node(:)
+    real(wp), allocatable :: ent_w(:)
+    real(wp), allocatable :: gap_w(:)         !< weighted gap at the predicted positions
+    real(wp), allocatable :: slip_w(:)        !< weighted slip of the predicted increment
+    real(wp), allocatable :: length(:)        !< length the multiplier acts on (for stresses)
+    real(wp), allocatable :: coord(:)         !< reference arc length of the node (for profiles)
+  end type constraint_set_t
+
+  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row
+
+contains
+
+  !> Start a new set with room for up to `mcap` constraints (grow-only buffers).
+  subroutine cs_start(cs, mcap)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: mcap
+    if (.not. allocated(cs%snode)) then
+      call grow(cs, max(mcap, 1), max(8*mcap, 8))
+    else if (size(cs%snode) < mcap) then
+      call grow(cs, mcap, max(size(cs%ent_node), 8*mcap))
+    end if
+    cs%m = 0
+    cs%nent = 0
+    cs%g1_band = 0
+    cs%row_ptr(1) = 1
+  end subroutine cs_start
+
+  !> Open row j = m+1 for slave surface node `snode` (global `gnode`).
+  subroutine cs_add_row(cs, snode, gnode, normal, length, coord)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: snode, gnode
+    real(wp), intent(in) :: normal(2), length, coord
+    integer :: j
+    cs%m = cs%m + 1
+    j = cs%m
+    cs%snode(j) = snode
+    cs%gnode(j) = gnode
+    cs%normal(:, j) = normal
+    cs%tangent(:, j) = [normal(2), -normal(1)]
+    cs%g1(:, j) = 0.0_wp
+    cs%g1(0, j) = 1.0_wp
+    cs%length(j) = length
+    cs%coord(j) = coord
+    cs%gap_w(j) = 0.0_wp
+    cs%slip_w(j) = 0.0_wp
+  end subroutine cs_add_row
+
+  !> Add weight w of node p to the open row (merging a repeated node).
+  subroutine cs_add_entry(cs, p, w)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: p
+    real(wp), intent(in) :: w
+    integer :: e
+    do e = cs%row_ptr(cs%m), cs%nent
+      if (cs%ent_node(e) == p) then
+        cs%ent_w(e) = cs%ent_w(e) + w
+        return
+      end if
+    end do
+    if (cs%nent == size(cs%ent_node)) call grow(cs, size(cs%snode), 2*size(cs%ent_node))
+    cs%nent = cs%nent + 1
+    cs%ent_node(cs%nent) = p
+    cs%ent_w(cs%nent) = w
+  end subroutine cs_add_entry
+
+  !> Close the open row: weighted gap and slip from positions x and increments du.
+  subroutine cs_finish_row(cs, x, du)
+    type(constraint_set_t), intent(inout) :: cs
+    real(wp), intent(in) :: x(:,:), du(:,:)
+    integer :: j, e, p
+    j = cs%m
+    cs%row_ptr(j + 1) = cs%nent + 1
+    cs%gap_w(j) = 0.0_wp
+    cs%slip_w(j) = 0.0_wp
+    do e = cs%row_ptr(j), cs%nent
+      p = cs%ent_node(e)
+      cs%gap_w(j) = cs%gap_w(j) + cs%ent_w(e)*dot_product(x(:, p), cs%normal(:, j))
+      cs%slip_w(j) = cs%slip_w(j) + cs%ent_w(e)*dot_product(du(:, p), cs%tangent(:, j))
+    end do
+  end subroutine cs_finish_row
+
+  subroutine grow(cs, mcap, ecap)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: mcap, ecap
+    integer, allocatable :: ti(:)
+    real(wp), allocatable :: tr(:)
+    logical :: small
+    small = .true.
+    if (allocated(cs%snode)) small = size(cs%snode) < mcap
+    if (small) then
+      if (allocated(cs%snode)) deallocate(cs%snode, cs%gnode, cs%normal, cs%tangent, cs%g1, cs%row_ptr, &
+        cs%gap_w, cs%slip_w, cs%length, cs%coord)
+      allocate(cs%snode(mcap), cs%gnode(mcap), cs%normal(2, mcap), cs%tangent(2, mcap), &
+        cs%g1(-G1_MAX_BAND:G1_MAX_BAND, mcap), cs%row_ptr(mcap + 1), cs%gap_w(mcap), cs%slip_w(mcap), &
+        cs%length(mcap), cs%coord(mcap))
+      cs%g1 = 0.0_wp
+    end if
+    if (.not. allocated(cs%ent_node)) then
+      allocate(cs%ent_node(ecap), cs%ent_w(ecap))
+    else if (size(cs%ent_node) < ecap) then
+      ! Keep the entries written so far: rows are built in place.
+      allocate(ti(ecap))
+      ti(1:cs%nent) = cs%ent_node(1:cs%nent)
+      call move_alloc(ti, cs%ent_node)
+      allocate(tr(ecap))
+      tr(1:cs%nent) = cs%ent_w(1:cs%nent)
+      call move_alloc(tr, cs%ent_w)
+    end if
+  end subroutine grow
+end module raccord_constraint_set

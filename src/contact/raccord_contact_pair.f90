@@ -1,0 +1,338 @@
+!> A contact pair and the contact step of the explicit scheme: after the
+!> predictor, build the constraints on the predicted geometry (matching
+!> method), solve for the multipliers that make the contact and friction
+!> conditions hold at t(n+1) (forward increment), and correct u(n+1) and
+!> v(n+1/2) (method brief section 3):
+!>   u(n+1) = u*(n+1) + dt^2 M^-1 f_c,   v(n+1/2) = v*(n+1/2) + dt M^-1 f_c.
+!> The energy account is updated at the nodes moved, so the balance stays
+!> exact: the contact work is what contact takes out of the system
+!> (closure is perfectly inelastic at node level, friction dissipates).
+module raccord_contact_pair
+  use raccord_kinds, only: wp, i8
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT, EXIT_NUMERIC
+  use raccord_log, only: log_warn
+  use raccord_strings, only: str
+  use raccord_mesh, only: mesh_t
+  use raccord_scene, only: scene_t, METHOD_NTS, METHOD_MORTAR
+  use raccord_model, only: model_t
+  use raccord_state, only: state_t
+  use raccord_contact_surface, only: contact_surface_t, build_contact_surface
+  use raccord_contact_search, only: bins_t
+  use raccord_constraint_set, only: constraint_set_t
+  use raccord_multiplier_solver, only: solver_work_t, solve_multipliers, ST_OPEN, ST_STICK, ST_SLIP
+  use raccord_node_to_segment, only: build_node_to_segment
+  implicit none
+  private
+
+  integer, parameter :: MAX_FAILED_STEPS = 20   !< consecutive unconverged steps before the run stops
+
+  type, public :: contact_pair_t
+    character(len=:), allocatable :: name          !< slave/master, for logs and outputs
+    integer :: method = METHOD_NTS
+    integer :: multiplier = 1
+    real(wp) :: mu = 0.0_wp
+    real(wp) :: reach = 0.0_wp                     !< search distance
+    integer :: max_iter = 50
+    type(contact_surface_t) :: slave, master
+    type(constraint_set_t) :: cs
+    type(bins_t) :: bins
+    type(solver_work_t) :: work
+    ! Per slave surface node, kept between steps (status is the warm start).
+    integer, allocatable :: status(:)
+    real(wp), allocatable :: sigma(:), gap(:), lam_n(:), lam_t(:), pressure(:), shear(:), slip(:), trib(:)
+    ! Per constraint scratch, and per global node scratch (touched at surface nodes only).
+    integer, allocatable :: st_c(:)
+    real(wp), allocatable :: sg_c(:)
+    real(wp), allocatable :: xcur(:,:), xpred(:,:), dcur(:,:), fc(:,:), ft(:,:)
+    integer, allocatable :: touched(:)
+    logical, allocatable :: mark(:)
+    ! Step report.
+    real(wp) :: force(2) = 0.0_wp                  !< resultant contact force on the slave body
+    real(wp) :: normal_sum = 0.0_wp, tangent_sum = 0.0_wp
+    integer :: nactive = 0, nslip = 0, iterations = 0, failed_streak = 0
+    integer(i8) :: failed_total = 0, iterations_total = 0, steps = 0
+    real(wp) :: residual = 0.0_wp, residual_max = 0.0_wp
+    integer(i8) :: clock_build = 0, clock_solve = 0
+  end type contact_pair_t
+
+  public :: init_contact_pairs, enforce_contact
+
+contains
+
+  !> Contact pairs from the scene's &contact_pair groups.
+  subroutine init_contact_pairs(scene, mesh, model, pairs, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(in) :: model
+    type(contact_pair_t), allocatable, intent(out) :: pairs(:)
+    type(error_t), intent(inout) :: err
+    integer :: k, np, bs, bm
+    character(len=:), allocatable :: where
+
+    np = 0
+    if (allocated(scene%contacts)) np = size(scene%contacts)
+    allocate(pairs(np))
+    do k = 1, np
+      associate (spec => scene%contacts(k), pair => pairs(k))
+        where = 'scene ' // scene%path // ': &contact_pair #' // str(k) // ' (slave ''' // trim(spec%slave) // &
+          ''', master ''' // trim(spec%master) // ''')'
+        if (spec%method == METHOD_MORTAR) then
+          call raise_error(err, EXIT_INPUT, where // ': method ''mortar'' is not available in this version; ' // &
+            'use method = ''node_to_segment''.')
+          return
+        end if
+        call build_contact_surface(mesh, spec%slave, where // ' slave', pair%slave, err)
+        if (err%failed()) return
+        call build_contact_surface(mesh, spec%master, where // ' master', pair%master, err)
+        if (err%failed()) return
+        bs = surface_body(model, pair%slave)
+        bm = surface_body(model, pair%master)
+        if (bs == 0 .or. bm == 0) then
+          call raise_error(err, EXIT_INPUT, where // ': a contact surface lies on elements that belong to no ' // &
+            '&body; give each body its element set.')
+          return
+        end if
+        if (bs == bm) then
+          call raise_error(err, EXIT_INPUT, where // ': slave and master are on the same body ''' // &
+            model%bodies(bs)%name // '''; self-contact is not supported. Use surfaces of two bodies.')
+          return
+        end if
+        pair%name = trim(spec%slave) // '/' // trim(spec%master)
+        pair%method = spec%method
+        pair%multiplier = spec%multiplier
+        pair%mu = spec%friction
+        pair%max_iter = spec%max_iterations
+        pair%reach = spec%search_distance
+        if (pair%reach <= 0.0_wp) pair%reach = max(pair%slave%h_max, pair%master%h_max)
+        associate (ns => pair%slave%nnode)
+          allocate(pair%status(ns), source=ST_OPEN)
+          allocate(pair%sigma(ns), pair%gap(ns), pair%lam_n(ns), pair%lam_t(ns), pair%pressure(ns), &
+            pair%shear(ns), pair%slip(ns), pair%trib(ns), source=0.0_wp)
+          pair%sigma = 1.0_wp
+          allocate(pair%st_c(ns), pair%sg_c(ns))
+        end associate
+        allocate(pair%xcur(2, model%nnode), pair%xpred(2, model%nnode), pair%dcur(2, model%nnode), &
+          pair%fc(2, model%nnode), &
+          pair%ft(2, model%nnode), source=0.0_wp)
+        allocate(pair%mark(model%nnode), source=.false.)
+        allocate(pair%touched(pair%slave%nnode + pair%master%nnode))
+      end associate
+    end do
+  end subroutine init_contact_pairs
+
+  !> Body of a surface (of its first node).
+  integer function surface_body(model, surf)
+    type(model_t), intent(in) :: model
+    type(contact_surface_t), intent(in) :: surf
+    surface_body = model%node_body(surf%node(1))
+  end function surface_body
+
+  !> The contact step for every pair, one after the other.
+  subroutine enforce_contact(pairs, model, state, err)
+    type(contact_pair_t), intent(inout) :: pairs(:)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    type(error_t), intent(inout) :: err
+    integer :: k
+    do k = 1, size(pairs)
+      call enforce_pair(pairs(k), model, state, err)
+      if (err%failed()) return
+    end do
+  end subroutine enforce_contact
+
+  subroutine enforce_pair(pair, model, state, err)
+    type(contact_pair_t), intent(inout) :: pair
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    type(error_t), intent(inout) :: err
+    integer :: i, p, j, m
+    integer(i8) :: c0, c1, c2
+
+    call system_clock(c0)
+    ! Positions at t(n), predicted positions and increments, at the surface nodes only.
+    call load_surface(pair%slave)
+    call load_surface(pair%master)
+    select case (pair%method)
+    case default
+      call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
+        pair%bins, pair%trib, pair%cs)
+    end select
+    m = pair%cs%m
+    ! Warm start: last step's sets; a newly met node enters if it would penetrate.
+    do j = 1, m
+      i = pair%cs%snode(j)
+      pair%st_c(j) = pair%status(i)
+      pair%sg_c(j) = pair%sigma(i)
+      if (pair%st_c(j) == ST_OPEN .and. pair%cs%gap_w(j) < 0.0_wp) pair%st_c(j) = ST_STICK
+    end do
+    call system_clock(c1)
+    call solve_multipliers(pair%cs, model%minv_dof, correction_factor(model, state), state%dt, pair%mu, &
+      pair%max_iter, pair%st_c, pair%sg_c, pair%work)
+    call system_clock(c2)
+    pair%clock_build = pair%clock_build + (c1 - c0)
+    pair%clock_solve = pair%clock_solve + (c2 - c1)
+    pair%steps = pair%steps + 1
+    pair%iterations = pair%work%iterations
+    pair%iterations_total = pair%iterations_total + pair%work%iterations
+    pair%residual = pair%work%residual
+    pair%residual_max = max(pair%residual_max, pair%residual)
+    if (.not. pair%work%converged) then
+      pair%failed_streak = pair%failed_streak + 1
+      pair%failed_total = pair%failed_total + 1
+      call log_warn('contact', 'pair ' // pair%name // ': multipliers not converged at step ' // &
+        str(state%step) // ' (t = ' // str(state%time) // ') after ' // str(pair%work%iterations) // &
+        ' iterations; residual ' // str(pair%residual, 3) // ', ' // str(m) // ' constraints')
+      if (pair%failed_streak > MAX_FAILED_STEPS) then
+        call raise_error(err, EXIT_NUMERIC, 'contact pair ' // pair%name // ': the multiplier solve failed ' // &
+          'to converge for ' // str(pair%failed_streak) // ' steps in a row (last residual ' // &
+          str(pair%residual, 3) // ' at t = ' // str(state%time) // '). Reduce the time step (&time safety), ' // &
+          'raise &contact_pair max_iterations, or check the surfaces.')
+        return
+      end if
+    else
+      pair%failed_streak = 0
+    end if
+    call apply_correction(pair, model, state)
+
+    ! Per slave node results (open unless constrained this step).
+    pair%status = ST_OPEN
+    pair%gap = huge(1.0_wp)
+    pair%lam_n = 0.0_wp
+    pair%lam_t = 0.0_wp
+    pair%pressure = 0.0_wp
+    pair%shear = 0.0_wp
+    pair%slip = 0.0_wp
+    pair%normal_sum = 0.0_wp
+    pair%tangent_sum = 0.0_wp
+    pair%nactive = 0
+    pair%nslip = 0
+    do j = 1, m
+      i = pair%cs%snode(j)
+      pair%status(i) = pair%st_c(j)
+      pair%sigma(i) = pair%sg_c(j)
+      pair%gap(i) = pair%work%gn(j)
+      pair%lam_n(i) = pair%work%lam(j)
+      pair%lam_t(i) = pair%work%tau(j)
+      pair%slip(i) = pair%work%gt(j)
+      ! Contact stress: weighted multiplier over the length it acts on.
+      pair%pressure(i) = pair%work%fn(j)/pair%cs%length(j)
+      pair%shear(i) = pair%work%ft(j)/pair%cs%length(j)
+      pair%normal_sum = pair%normal_sum + pair%work%fn(j)
+      pair%tangent_sum = pair%tangent_sum + pair%work%ft(j)
+      if (pair%st_c(j) /= ST_OPEN) pair%nactive = pair%nactive + 1
+      if (pair%st_c(j) == ST_SLIP) pair%nslip = pair%nslip + 1
+    end do
+    pair%force = 0.0_wp
+    do i = 1, pair%slave%nnode
+      p = pair%slave%node(i)
+      pair%force = pair%force + pair%fc(:, p)
+    end do
+  contains
+    subroutine load_surface(surf)
+      type(contact_surface_t), intent(in) :: surf
+      integer :: q, n
+      do q = 1, surf%nnode
+        n = surf%node(q)
+        pair%xcur(:, n) = model%x(:, n) + state%u(:, n)
+        pair%xpred(:, n) = model%x(:, n) + state%u_next(:, n)
+        pair%dcur(:, n) = state%u_next(:, n) - state%u(:, n)
+      end do
+    end subroutine load_surface
+  end subroutine enforce_pair
+
+  !> How a force f_c at t(n) moves u(n+1): (CD-1) with the semi-implicit
+  !> damping gives dv(n+1/2) = h M^-1 f_c / (1 + alpha h/2), h = dt (dt/2 on
+  !> the first half step), and du(n+1) = dt dv. So du = dt^2 (factor M^-1) f_c.
+  pure real(wp) function correction_factor(model, state) result(factor)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    real(wp) :: h
+    h = state%dt
+    if (state%step == 0) h = 0.5_wp*state%dt
+    factor = (h/state%dt)/(1.0_wp + 0.5_wp*model%damping*h)
+  end function correction_factor
+
+  !> Contact forces f_c = sum_j w_j (lambda_j n_j + tau_j t_j), the
+  !> correction dt^2 M^-1 f_c of u(n+1) and dt M^-1 f_c of v(n+1/2), and the
+  !> energy account at the moved nodes: H(n+1/2) of (E-1) and the contact
+  !> work -f_c . (u(n+1) - u(n-1))/2 of (E-2). On dofs with prescribed
+  !> motion the force goes to the support's reaction instead.
+  subroutine apply_correction(pair, model, state)
+    type(contact_pair_t), intent(inout) :: pair
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    integer :: j, e, p, c, nt, t, jc
+    real(wp) :: dt, dx, vold, dv, vd, dh, wc, wf, dd, dk, inc, fvec(2), tvec(2), factor, h
+
+    dt = state%dt
+    factor = correction_factor(model, state)
+    h = dt
+    if (state%step == 0) h = 0.5_wp*dt
+    nt = 0
+    do j = 1, pair%cs%m
+      fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
+      tvec = pair%work%tau(j)*pair%cs%tangent(:, j)
+      do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+        p = pair%cs%ent_node(e)
+        if (.not. pair%mark(p)) then
+          pair%mark(p) = .true.
+          nt = nt + 1
+          pair%touched(nt) = p
+          pair%fc(:, p) = 0.0_wp
+          pair%ft(:, p) = 0.0_wp
+        end if
+        pair%fc(:, p) = pair%fc(:, p) + pair%cs%ent_w(e)*fvec
+        pair%ft(:, p) = pair%ft(:, p) + pair%cs%ent_w(e)*tvec
+      end do
+    end do
+    ! Nodes of the slave surface not touched this step carry no force.
+    do j = 1, pair%slave%nnode
+      p = pair%slave%node(j)
+      if (.not. pair%mark(p)) pair%fc(:, p) = 0.0_wp
+    end do
+    dh = 0.0_wp
+    wc = 0.0_wp
+    wf = 0.0_wp
+    dd = 0.0_wp
+    dk = 0.0_wp
+    do t = 1, nt
+      p = pair%touched(t)
+      pair%mark(p) = .false.
+      do c = 1, 2
+        if (model%minv_dof(c, p) > 0.0_wp) then
+          dx = dt*dt*factor*model%minv_dof(c, p)*pair%fc(c, p)
+          dv = dx/dt
+          vold = state%v(c, p)
+          state%v(c, p) = vold + dv
+          dh = dh + 0.5_wp*model%mass(p)*(state%v(c, p)**2 - vold**2) + 0.5_wp*dx*state%f_int(c, p)
+          state%u_next(c, p) = state%u_next(c, p) + dx
+          ! Damping dissipates alpha h m |v(n)|^2 with v(n) the mean of the
+          ! half-step velocities, which moves by dv/2 (predict_motion).
+          if (state%step == 0) then
+            vd = 0.5_wp*(model%v0(c, p) + vold)
+          else
+            vd = state%v_mid(c, p)
+            state%v_mid(c, p) = vd + 0.5_wp*dv
+            dk = dk + 0.5_wp*model%mass(p)*((vd + 0.5_wp*dv)**2 - vd**2)
+          end if
+          dd = dd + model%damping*h*model%mass(p)*((vd + 0.5_wp*dv)**2 - vd**2)
+        else
+          jc = model%dof_cdof(c, p)
+          if (jc > 0) state%reaction(jc) = state%reaction(jc) - pair%fc(c, p)
+        end if
+        if (state%step == 0) then
+          inc = 0.25_wp*dt*(model%v0(c, p) + state%v(c, p))
+        else
+          inc = 0.5_wp*(state%u_next(c, p) - state%u_prev(c, p))
+        end if
+        wc = wc - pair%fc(c, p)*inc
+        wf = wf - pair%ft(c, p)*inc
+      end do
+    end do
+    state%energy%discrete = state%energy%discrete + dh
+    state%energy%damping = state%energy%damping + dd
+    state%energy%kinetic = state%energy%kinetic + dk
+    state%energy%contact = state%energy%contact + wc
+    state%energy%friction = state%energy%friction + wf
+  end subroutine apply_correction
+end module raccord_contact_pair

@@ -1,0 +1,133 @@
+!> Contact search by binning: the master segments are sorted into a uniform
+!> grid of cells on the current geometry, and each slave node looks only at
+!> the segments of its own cell. Building and querying are O(n) in surface
+!> nodes; the grid is rebuilt every step (the surfaces move).
+!> Memory is kept between steps and grows only when a surface needs more.
+module raccord_contact_search
+  use raccord_kinds, only: wp
+  implicit none
+  private
+
+  type, public :: bins_t
+    integer :: nx = 0, ny = 0
+    real(wp) :: origin(2) = 0.0_wp
+    real(wp) :: cell = 1.0_wp
+    integer, allocatable :: head(:)        !< (nx*ny + 1) CSR start of each cell
+    integer, allocatable :: item(:)        !< segment indices, cell by cell
+    integer, allocatable :: count(:)
+    real(wp), allocatable :: box(:,:)      !< (4, nseg) inflated bounding boxes
+  end type bins_t
+
+  public :: build_bins, query_bins
+
+contains
+
+  !> Bin the segments seg(:, 1:nseg) (nodes of x) with boxes inflated by `reach`.
+  subroutine build_bins(bins, x, seg, nen, reach)
+    type(bins_t), intent(inout) :: bins
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: seg(:,:), nen
+    real(wp), intent(in) :: reach
+    integer :: k, j, nseg, i0, i1, j0, j1, ii, jj, c, total
+    real(wp) :: lo(2), hi(2), gl(2), gh(2), hmax
+    nseg = size(seg, 2)
+    if (.not. allocated(bins%box)) allocate(bins%box(4, nseg))
+    if (size(bins%box, 2) < nseg) then
+      deallocate(bins%box)
+      allocate(bins%box(4, nseg))
+    end if
+    gl = huge(1.0_wp)
+    gh = -huge(1.0_wp)
+    hmax = 0.0_wp
+    do k = 1, nseg
+      lo = x(:, seg(1, k))
+      hi = lo
+      do j = 2, nen
+        lo = min(lo, x(:, seg(j, k)))
+        hi = max(hi, x(:, seg(j, k)))
+      end do
+      hmax = max(hmax, maxval(hi - lo))
+      ! A quadratic edge bulges by at most half its mid-node offset beyond
+      ! the box of its nodes; the reach covers it for sane meshes.
+      bins%box(:, k) = [lo - reach, hi + reach]
+      gl = min(gl, lo - reach)
+      gh = max(gh, hi + reach)
+    end do
+    ! Cells about one segment plus reach wide, and never more than ~4 per segment.
+    bins%cell = max(hmax + 2.0_wp*reach, tiny(1.0_wp))
+    do while (real(ceiling((gh(1) - gl(1))/bins%cell), wp)*real(ceiling((gh(2) - gl(2))/bins%cell), wp) > &
+              4.0_wp*real(nseg, wp) + 16.0_wp)
+      bins%cell = 2.0_wp*bins%cell
+    end do
+    bins%origin = gl
+    bins%nx = max(1, ceiling((gh(1) - gl(1))/bins%cell))
+    bins%ny = max(1, ceiling((gh(2) - gl(2))/bins%cell))
+    call ensure(bins%count, bins%nx*bins%ny)
+    call ensure(bins%head, bins%nx*bins%ny + 1)
+    bins%count(1:bins%nx*bins%ny) = 0
+    do k = 1, nseg
+      call cell_range(bins, bins%box(:, k), i0, i1, j0, j1)
+      do jj = j0, j1
+        do ii = i0, i1
+          c = ii + (jj - 1)*bins%nx
+          bins%count(c) = bins%count(c) + 1
+        end do
+      end do
+    end do
+    bins%head(1) = 1
+    do c = 1, bins%nx*bins%ny
+      bins%head(c + 1) = bins%head(c) + bins%count(c)
+    end do
+    total = bins%head(bins%nx*bins%ny + 1) - 1
+    call ensure(bins%item, total)
+    bins%count(1:bins%nx*bins%ny) = 0
+    do k = 1, nseg
+      call cell_range(bins, bins%box(:, k), i0, i1, j0, j1)
+      do jj = j0, j1
+        do ii = i0, i1
+          c = ii + (jj - 1)*bins%nx
+          bins%item(bins%head(c) + bins%count(c)) = k
+          bins%count(c) = bins%count(c) + 1
+        end do
+      end do
+    end do
+  end subroutine build_bins
+
+  !> Segments whose inflated box contains p: item(first:last) of the cell,
+  !> filtered by the caller with bins%box. first > last when p is outside.
+  pure subroutine query_bins(bins, p, first, last)
+    type(bins_t), intent(in) :: bins
+    real(wp), intent(in) :: p(2)
+    integer, intent(out) :: first, last
+    integer :: i, j, c
+    first = 1
+    last = 0
+    i = floor((p(1) - bins%origin(1))/bins%cell) + 1
+    j = floor((p(2) - bins%origin(2))/bins%cell) + 1
+    if (i < 1 .or. i > bins%nx .or. j < 1 .or. j > bins%ny) return
+    c = i + (j - 1)*bins%nx
+    first = bins%head(c)
+    last = bins%head(c + 1) - 1
+  end subroutine query_bins
+
+  pure subroutine cell_range(bins, box, i0, i1, j0, j1)
+    type(bins_t), intent(in) :: bins
+    real(wp), intent(in) :: box(4)
+    integer, intent(out) :: i0, i1, j0, j1
+    i0 = max(1, floor((box(1) - bins%origin(1))/bins%cell) + 1)
+    j0 = max(1, floor((box(2) - bins%origin(2))/bins%cell) + 1)
+    i1 = min(bins%nx, floor((box(3) - bins%origin(1))/bins%cell) + 1)
+    j1 = min(bins%ny, floor((box(4) - bins%origin(2))/bins%cell) + 1)
+  end subroutine cell_range
+
+  !> Grow-only integer buffer.
+  subroutine ensure(a, n)
+    integer, allocatable, intent(inout) :: a(:)
+    integer, intent(in) :: n
+    if (allocated(a)) then
+      if (size(a) >= n) return
+      deallocate(a)
+    end if
+    allocate(a(max(n, 1)))
+  end subroutine ensure
+end module raccord_contact_search

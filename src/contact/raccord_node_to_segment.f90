@@ -1,0 +1,153 @@
+!> Node-to-segment matching ("raccord ponctuel", paper 4.1; method brief
+!> section 4): each slave node is projected on the closest master segment;
+!> one constraint per slave node, its force on the slave node and spread to
+!> the master segment's nodes with the segment's shape functions at the
+!> projection point (G1 = I, G21 = N_a).
+!>
+!> Geometry (closest segment, projection point, normal) is taken on the
+!> configuration at t(n); the gap is that of the predicted positions at
+!> t(n+1) along it, so the constraint on u(n+1) is linear. The predicted
+!> surface is not used for the normal: it lacks this step's contact force,
+!> and with unequal nodal masses (HRZ lumping of Q8: corner and mid-side
+!> nodes) it is wavy by dt^2 f/m, which tilts the end tangents of quadratic
+!> segments and would inject spurious tangential forces.
+module raccord_node_to_segment
+  use raccord_kinds, only: wp
+  use raccord_shape, only: shape_line
+  use raccord_contact_surface, only: contact_surface_t
+  use raccord_contact_search, only: bins_t, build_bins, query_bins
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
+  implicit none
+  private
+
+  public :: build_node_to_segment, tributary_lengths
+
+contains
+
+  !> Constraints of the slave nodes that project on the master within
+  !> `reach` of it (gap between -reach and +reach): geometry on positions x
+  !> (t(n)), gaps on xpred (predicted t(n+1)), slip on the increments du.
+  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, bins, trib, cs)
+    type(contact_surface_t), intent(in) :: slave, master
+    real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
+    real(wp), intent(in) :: reach
+    type(bins_t), intent(inout) :: bins
+    real(wp), intent(inout) :: trib(:)           !< (slave%nnode) scratch: tributary lengths
+    type(constraint_set_t), intent(inout) :: cs
+    integer :: i, p, first, last, q, k, best, nen, a
+    real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
+    ! A foot up to 1 % of a segment beyond the end of the master chain still
+    ! counts: a slave node that sits at the master's end (a common corner)
+    ! projects a hair beyond it as soon as the end segment tilts.
+    real(wp), parameter :: eps = 1.0e-9_wp, end_tol = 0.02_wp
+    logical :: beyond
+
+    nen = master%nen_seg
+    call build_bins(bins, x, master%seg, nen, reach)
+    call tributary_lengths(slave, x, trib)
+    call cs_start(cs, slave%nnode)
+    do i = 1, slave%nnode
+      p = slave%node(i)
+      xp = x(:, p)
+      call query_bins(bins, xp, first, last)
+      best = 0
+      best_dist = huge(1.0_wp)
+      do q = first, last
+        k = bins%item(q)
+        if (xp(1) < bins%box(1, k) .or. xp(1) > bins%box(3, k) .or. &
+            xp(2) < bins%box(2, k) .or. xp(2) > bins%box(4, k)) cycle
+        call load_segment(master, x, k, xs)
+        call project_on_segment(nen, xs, xp, s, foot, tang)
+        ! A foot beyond the segment's end belongs to the neighbour, or, at
+        ! the end of the master chain, to nobody: the node has slid off.
+        beyond = abs(s) > 1.0_wp + eps
+        if (beyond) then
+          if (s > 1.0_wp + end_tol .and. k == master%nseg .and. .not. master%closed) cycle
+          if (s < -1.0_wp - end_tol .and. k == 1 .and. .not. master%closed) cycle
+          ! Near a vertex between two segments (convex corner): keep the
+          ! vertex as the closest point; the neighbour gives the normal too.
+          s = max(-1.0_wp, min(1.0_wp, s))
+          call segment_point(nen, xs, s, foot, tang)
+          tang = tang/norm2(tang)
+        end if
+        dist = norm2(xp - foot)
+        if (dist < best_dist) then
+          best_dist = dist
+          best = k
+          best_s = s
+          best_t = tang
+        end if
+      end do
+      if (best == 0) cycle
+      ! Gap along the master's outward normal (tangent turned clockwise).
+      n_m = -rotate_ccw(best_t)
+      call load_segment(master, xpred, best, xs)
+      call segment_point(nen, xs, best_s, foot, tang)
+      g = dot_product(xpred(:, p) - foot, n_m)
+      if (g > reach .or. g < -reach) cycle
+      call cs_add_row(cs, i, p, -n_m, trib(i), slave%s0(i))
+      call cs_add_entry(cs, p, -1.0_wp)
+      call shape_line(nen, best_s, sh, dsh)
+      do a = 1, nen
+        call cs_add_entry(cs, master%seg(a, best), sh(a))
+      end do
+      call cs_finish_row(cs, xpred, du)
+    end do
+  end subroutine build_node_to_segment
+
+  subroutine load_segment(surf, x, k, xs)
+    type(contact_surface_t), intent(in) :: surf
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: k
+    real(wp), intent(out) :: xs(2, 3)
+    integer :: a
+    xs = 0.0_wp
+    do a = 1, surf%nen_seg
+      xs(:, a) = x(:, surf%seg(a, k))
+    end do
+  end subroutine load_segment
+
+  !> Length of surface carried by each node: integral of its shape
+  !> function along the current surface (half of each neighbouring segment
+  !> for 2-node segments; 1/6, 2/3, 1/6 of a straight 3-node one).
+  subroutine tributary_lengths(surf, x, trib)
+    type(contact_surface_t), intent(in) :: surf
+    real(wp), intent(in) :: x(:,:)
+    real(wp), intent(inout) :: trib(:)
+    real(wp), parameter :: gs(3) = [-0.774596669241483377_wp, 0.0_wp, 0.774596669241483377_wp]
+    real(wp), parameter :: gw(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
+    real(wp) :: xs(2, 3), xx(2), dx(2), sh(3), dsh(3)
+    integer :: k, g, a, stride
+    trib(1:surf%nnode) = 0.0_wp
+    stride = surf%nen_seg - 1
+    do k = 1, surf%nseg
+      call load_segment(surf, x, k, xs)
+      do g = 1, 3
+        call segment_point(surf%nen_seg, xs, gs(g), xx, dx)
+        call shape_line(surf%nen_seg, gs(g), sh, dsh)
+        ! Local node a of segment k sits at chain position stride*(k-1)+1
+        ! (start), +stride (end), +1 (mid of a 3-node segment).
+        do a = 1, surf%nen_seg
+          associate (pos => chain_position(surf, k, a, stride))
+            trib(pos) = trib(pos) + sh(a)*norm2(dx)*gw(g)
+          end associate
+        end do
+      end do
+    end do
+  end subroutine tributary_lengths
+
+  pure integer function chain_position(surf, k, a, stride) result(pos)
+    type(contact_surface_t), intent(in) :: surf
+    integer, intent(in) :: k, a, stride
+    select case (a)
+    case (1)
+      pos = stride*(k - 1) + 1
+    case (2)
+      pos = stride*k + 1
+      if (surf%closed .and. k == surf%nseg) pos = 1
+    case default
+      pos = stride*(k - 1) + 2
+    end select
+  end function chain_position
+end module raccord_node_to_segment
