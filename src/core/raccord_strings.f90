@@ -59,19 +59,32 @@ contains
         s = s(1:k)
       end if
     else
-      write(fmt, '(a,i0,a,i0,a)') '(es', d + 8, '.', d - 1, ')'
+      ! Three exponent digits: without them |x| >= 1e100 prints as 1.0+100.
+      write(fmt, '(a,i0,a,i0,a)') '(es', d + 9, '.', d - 1, 'e3)'
       write(buf, fmt) x
       s = trim(adjustl(buf))
-      ! Mantissa: drop trailing zeros; exponent: lower-case e.
+      ! Mantissa: drop trailing zeros; exponent: lower-case e, no leading zeros.
       e = index(s, 'E')
       k = e - 1
       do while (s(k:k) == '0')
         k = k - 1
       end do
       if (s(k:k) == '.') k = k - 1
-      s = s(1:k) // 'e' // s(e+1:)
+      s = s(1:k) // 'e' // exponent_text(s(e+1:))
     end if
   end function str_real
+
+  !> '+005' -> '+05', '-100' -> '-100': at least two digits, like C's printf.
+  pure function exponent_text(e) result(s)
+    character(len=*), intent(in) :: e
+    character(len=:), allocatable :: s
+    integer :: k
+    k = 2
+    do while (k < len(e) - 1 .and. e(k:k) == '0')
+      k = k + 1
+    end do
+    s = e(1:1) // e(k:)
+  end function exponent_text
 
   pure function str_logical(l) result(s)
     logical, intent(in) :: l
