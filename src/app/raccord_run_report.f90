@@ -57,7 +57,8 @@ contains
         call log_raw('body    ' // b%name // ': ' // str(size(b%elems)) // ' elements (' // &
           block_types(b) // '), E = ' // str(s%young, 4) // ', nu = ' // str(s%poisson, 3) // &
           ', rho = ' // str(s%density, 4) // ', ' // merge('plane stress', 'plane strain', s%plane_stress) // &
-          ', mass = ' // str(b%mass, 4) // ', sqrt(E/rho) = ' // str(c, 4))
+          ', mass = ' // str(b%mass, 4) // ', sqrt(E/rho) = ' // str(c, 4) // ', damping alpha = ' // &
+          str(merge(s%damping, scene%time%damping, s%damping >= 0.0_wp), 4))
       end associate
     end do
     do k = 1, size(model%supports)
@@ -86,7 +87,7 @@ contains
     if (model%has_supports) effects = effects // ', supports (' // str(model%ncdof) // ' dofs)'
     if (model%has_loads) effects = effects // ', surface loads (' // str(size(model%loads)) // ')'
     if (model%has_body_force) effects = effects // ', body force'
-    if (model%has_damping) effects = effects // ', mass damping (alpha = ' // str(model%damping, 4) // ')'
+    if (model%has_damping) effects = effects // ', mass damping (alpha up to ' // str(maxval(model%alpha), 4) // ')'
     do k = 1, size(pairs)
       call log_raw('contact pair ' // str(k) // ': slave ' // pairs(k)%slave%name // ' (' // &
         str(pairs(k)%slave%nnode) // ' nodes), master ' // pairs(k)%master%name // ' (' // &

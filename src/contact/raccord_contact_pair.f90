@@ -166,7 +166,7 @@ contains
       if (pair%st_c(j) == ST_OPEN .and. pair%cs%gap_w(j) < 0.0_wp) pair%st_c(j) = ST_STICK
     end do
     call system_clock(c1)
-    call solve_multipliers(pair%cs, model%minv_dof, correction_factor(model, state), state%dt, pair%mu, &
+    call solve_multipliers(pair%cs, model%minv_dof, model%alpha, velocity_step(state), state%dt, pair%mu, &
       pair%max_iter, pair%st_c, pair%sg_c, pair%work)
     call system_clock(c2)
     pair%clock_build = pair%clock_build + (c1 - c0)
@@ -240,17 +240,14 @@ contains
     end subroutine load_surface
   end subroutine enforce_pair
 
-  !> How a force f_c at t(n) moves u(n+1): (CD-1) with the semi-implicit
-  !> damping gives dv(n+1/2) = h M^-1 f_c / (1 + alpha h/2), h = dt (dt/2 on
-  !> the first half step), and du(n+1) = dt dv. So du = dt^2 (factor M^-1) f_c.
-  pure real(wp) function correction_factor(model, state) result(factor)
-    type(model_t), intent(in) :: model
+  !> Velocity step h of (CD-1): dt, or dt/2 on the first half step. A force
+  !> f_c at t(n) then moves v(n+1/2) by h M^-1 f_c / (1 + alpha h/2) (the
+  !> semi-implicit damping) and u(n+1) by dt times that.
+  pure real(wp) function velocity_step(state) result(h)
     type(state_t), intent(in) :: state
-    real(wp) :: h
     h = state%dt
     if (state%step == 0) h = 0.5_wp*state%dt
-    factor = (h/state%dt)/(1.0_wp + 0.5_wp*model%damping*h)
-  end function correction_factor
+  end function velocity_step
 
   !> Contact forces f_c = sum_j w_j (lambda_j n_j + tau_j t_j), the
   !> correction dt^2 M^-1 f_c of u(n+1) and dt M^-1 f_c of v(n+1/2), and the
@@ -262,12 +259,10 @@ contains
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
     integer :: j, e, p, c, nt, t, jc
-    real(wp) :: dt, dx, vold, dv, vd, dh, wc, wf, dd, dk, inc, fvec(2), tvec(2), factor, h
+    real(wp) :: dt, dx, vold, dv, vd, dh, wc, wf, dd, dk, inc, fvec(2), tvec(2), h
 
     dt = state%dt
-    factor = correction_factor(model, state)
-    h = dt
-    if (state%step == 0) h = 0.5_wp*dt
+    h = velocity_step(state)
     nt = 0
     do j = 1, pair%cs%m
       fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
@@ -300,7 +295,7 @@ contains
       pair%mark(p) = .false.
       do c = 1, 2
         if (model%minv_dof(c, p) > 0.0_wp) then
-          dx = dt*dt*factor*model%minv_dof(c, p)*pair%fc(c, p)
+          dx = dt*h*model%minv_dof(c, p)*pair%fc(c, p)/(1.0_wp + 0.5_wp*model%alpha(p)*h)
           dv = dx/dt
           vold = state%v(c, p)
           state%v(c, p) = vold + dv
@@ -315,7 +310,7 @@ contains
             state%v_mid(c, p) = vd + 0.5_wp*dv
             dk = dk + 0.5_wp*model%mass(p)*((vd + 0.5_wp*dv)**2 - vd**2)
           end if
-          dd = dd + model%damping*h*model%mass(p)*((vd + 0.5_wp*dv)**2 - vd**2)
+          dd = dd + model%alpha(p)*h*model%mass(p)*((vd + 0.5_wp*dv)**2 - vd**2)
         else
           jc = model%dof_cdof(c, p)
           if (jc > 0) state%reaction(jc) = state%reaction(jc) - pair%fc(c, p)

@@ -65,10 +65,11 @@ contains
   !> Solve for the multipliers of constraint set cs. status(1:m) holds the
   !> initial guess of the sets (ST_OPEN, ST_STICK, ST_SLIP) and returns the
   !> final ones; sigma(1:m) the slip directions.
-  subroutine solve_multipliers(cs, minv, minv_factor, dt, mu, max_iter, status, sigma, w)
+  subroutine solve_multipliers(cs, minv, alpha, h, dt, mu, max_iter, status, sigma, w)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: minv(:,:)          !< (2, nnode) inverse mass per dof, 0 where prescribed
-    real(wp), intent(in) :: minv_factor        !< scales minv (first half step, damping: see raccord_contact_pair)
+    real(wp), intent(in) :: alpha(:)           !< (nnode) mass-proportional damping of each node
+    real(wp), intent(in) :: h                  !< velocity step: dt, or dt/2 on the first step
     real(wp), intent(in) :: dt, mu
     integer, intent(in) :: max_iter
     integer, intent(inout) :: status(:)        !< (m) initial guess in, final sets out
@@ -85,7 +86,7 @@ contains
     if (m == 0) return
     friction = mu > 0.0_wp
     nu = merge(4, 2, friction)
-    call delassus(cs, minv, minv_factor, friction, w)
+    call delassus(cs, minv, alpha, h/dt, h, friction, w)
     w%status(1:m) = status(1:m)
     w%sigma(1:m) = sigma(1:m)
     if (.not. friction) where (w%status(1:m) == ST_SLIP) w%status(1:m) = ST_STICK
@@ -319,9 +320,11 @@ contains
 
   !> K = B M^-1 B' in band form, accumulated node by node:
   !> K(j, k) += w_jp w_kp n_j . (M_p^-1 n_k) for every node p the rows share.
-  subroutine delassus(cs, minv, minv_factor, friction, w)
+  !> A force f at t(n) moves u(n+1) by dt^2 (h/dt) M^-1 f / (1 + alpha h/2):
+  !> (CD-1) with its semi-implicit damping, and the half first step.
+  subroutine delassus(cs, minv, alpha, h_ratio, h, friction, w)
     type(constraint_set_t), intent(in) :: cs
-    real(wp), intent(in) :: minv(:,:), minv_factor
+    real(wp), intent(in) :: minv(:,:), alpha(:), h_ratio, h
     logical, intent(in) :: friction
     type(solver_work_t), intent(inout) :: w
     integer :: m, j, e, p, nn, a, b, ja, jb, ea, eb, ntouched, t, pos
@@ -379,7 +382,7 @@ contains
     end if
     do t = 1, ntouched
       p = w%touched(t)
-      mi = minv_factor*minv(:, p)
+      mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)
       do a = w%node_ptr(p), w%node_last(p) - 1
         ja = w%node_row(a)
         ea = w%node_ent(a)

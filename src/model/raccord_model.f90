@@ -68,7 +68,7 @@ module raccord_model
     type(surface_load_t), allocatable :: loads(:)
     real(wp), allocatable :: f_body(:,:)               !< (2, nnode) body-force nodal forces
     real(wp), allocatable :: v0(:,:)                   !< (2, nnode) initial velocity
-    real(wp) :: damping = 0.0_wp                       !< mass-proportional alpha [1/time]
+    real(wp), allocatable :: alpha(:)                  !< (nnode) mass-proportional damping [1/time], per body
     real(wp) :: w2_bound = 0.0_wp                      !< max over bodies of the element bound
     ! Active effects: the step loop does only what is switched on here.
     logical :: has_body_force = .false.

@@ -34,8 +34,7 @@ contains
     if (err%failed()) return
     call build_boundaries(scene, mesh, model, elem_body, err)
     if (err%failed()) return
-    model%damping = scene%time%damping
-    model%has_damping = model%damping > 0.0_wp
+    model%has_damping = any(model%alpha > 0.0_wp)
   end subroutine build_model
 
   subroutine copy_amplitudes(scene, model)
@@ -76,6 +75,7 @@ contains
     allocate(model%node_body(mesh%nnode), source=0)
     allocate(model%v0(2, mesh%nnode), source=0.0_wp)
     allocate(model%f_body(2, mesh%nnode), source=0.0_wp)
+    allocate(model%alpha(mesh%nnode), source=0.0_wp)
     types = [ELEM_Q4, ELEM_Q8]
 
     do ib = 1, nb
@@ -133,6 +133,8 @@ contains
           end if
           do k = 1, size(conn, 2)
             model%node_body(conn(:, k)) = ib
+            ! A body without damping of its own takes the &time damping.
+            model%alpha(conn(:, k)) = merge(spec%damping, scene%time%damping, spec%damping >= 0.0_wp)
             model%v0(1, conn(:, k)) = spec%velocity(1)
             model%v0(2, conn(:, k)) = spec%velocity(2)
           end do

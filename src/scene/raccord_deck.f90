@@ -38,7 +38,7 @@ module raccord_deck
   character(len=*), parameter :: RUN_KEYS(*) = [character(len=16) :: 'title', 'output_dir']
   character(len=*), parameter :: MESH_KEYS(*) = [character(len=16) :: 'file', 'format', 'scale']
   character(len=*), parameter :: BODY_KEYS(*) = [character(len=16) :: 'name', 'elset', 'young', 'poisson', &
-    'density', 'hypothesis', 'thickness', 'velocity', 'body_force']
+    'density', 'hypothesis', 'thickness', 'velocity', 'body_force', 'damping']
   character(len=*), parameter :: BC_KEYS(*) = [character(len=16) :: 'set', 'type', 'components', 'value', &
     'pressure', 'amplitude']
   character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
@@ -163,6 +163,10 @@ contains
     end do
 
     call check_references(path, blocks, scene, body_blk, bc_blk, amp_blk, err)
+    ! A body without its own damping takes the &time damping.
+    do k = 1, size(scene%bodies)
+      if (scene%bodies(k)%damping < 0.0_wp) scene%bodies(k)%damping = scene%time%damping
+    end do
   end subroutine read_deck
 
   pure integer function group_index(name)
@@ -316,15 +320,15 @@ contains
     spec%scale = scale
   end subroutine read_mesh
 
-  !> &body name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force.
+  !> &body name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force, damping.
   subroutine read_body(deck, blk, spec, err)
     character(len=*), intent(in) :: deck
     type(deck_block_t), intent(in) :: blk
     type(body_spec_t), intent(out) :: spec
     type(error_t), intent(inout) :: err
     character(len=name_len) :: name, elset, hypothesis
-    real(wp) :: young, poisson, density, thickness, velocity(2), body_force(2)
-    namelist /body/ name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force
+    real(wp) :: young, poisson, density, thickness, velocity(2), body_force(2), damping
+    namelist /body/ name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force, damping
     character(len=:), allocatable :: record, label
     character(len=256) :: msg
     integer :: k, ios
@@ -338,6 +342,7 @@ contains
     thickness = spec%thickness
     velocity = spec%velocity
     body_force = spec%body_force
+    damping = spec%damping
 
     ! The body's name labels every message, so read it first.
     k = blk%find('name')
@@ -360,8 +365,8 @@ contains
     call check_length(deck, blk, label, 'name', name, err)
     call check_length(deck, blk, label, 'elset', elset, err)
     call check_finite(deck, blk, label, [character(len=10) :: 'young', 'poisson', 'density', 'thickness', &
-      'velocity', 'velocity', 'body_force', 'body_force'], &
-      [young, poisson, density, thickness, velocity, body_force], err)
+      'velocity', 'velocity', 'body_force', 'body_force', 'damping'], &
+      [young, poisson, density, thickness, velocity, body_force, damping], err)
     if (err%failed()) return
 
     if (len_trim(name) == 0) then
@@ -384,6 +389,10 @@ contains
     else if (.not. (thickness > 0.0_wp)) then
       call bad_value(deck, blk, label, 'thickness', 'the thickness must be > 0', &
         'give the out-of-plane thickness, e.g. thickness = 1.0', err)
+    else if (blk%find('damping') > 0 .and. .not. (damping >= 0.0_wp)) then
+      call bad_value(deck, blk, label, 'damping', 'the damping coefficient must be >= 0', &
+        'give alpha in 1/time (about twice the lowest circular frequency damps that mode critically), ' // &
+        'or leave the key out to use the &time damping', err)
     end if
     if (err%failed()) return
     hypothesis = lower(hypothesis)
@@ -411,6 +420,7 @@ contains
     spec%thickness = thickness
     spec%velocity = velocity
     spec%body_force = body_force
+    spec%damping = damping
   end subroutine read_body
 
   !> &boundary set, type, components, value, pressure, amplitude.

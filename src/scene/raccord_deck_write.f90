@@ -64,6 +64,7 @@ contains
           call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
           call put(unit, '  velocity = ' // reals_text(b%velocity), ios, msg)
           call put(unit, '  body_force = ' // reals_text(b%body_force), ios, msg)
+          call put(unit, '  damping = ' // real_text(b%damping), ios, msg)
           call put(unit, '/', ios, msg)
         end associate
       end do

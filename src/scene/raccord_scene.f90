@@ -38,6 +38,8 @@ module raccord_scene
     real(wp) :: thickness = 1.0_wp                  !< out-of-plane thickness [length]
     real(wp) :: velocity(2) = 0.0_wp                !< initial velocity [length/time]
     real(wp) :: body_force(2) = 0.0_wp              !< force per unit volume [force/length^3]
+    real(wp) :: damping = -1.0_wp                   !< mass-proportional alpha [1/time]; the &time
+                                                    !< damping when not given (resolved on reading)
   end type body_spec_t
 
   integer, parameter, public :: BC_FIXED = 1         !< listed components held at zero
@@ -67,7 +69,7 @@ module raccord_scene
     real(wp) :: t_end = 0.0_wp                      !< end time [time]
     real(wp) :: dt = 0.0_wp                         !< fixed step [time]; 0 = safety*stable step
     real(wp) :: safety = 0.9_wp                     !< fraction of the stable step used
-    real(wp) :: damping = 0.0_wp                    !< mass-proportional damping alpha [1/time]
+    real(wp) :: damping = 0.0_wp                    !< default mass-proportional alpha of the bodies [1/time]
   end type time_spec_t
 
   !> &output: what is written, and how often.

@@ -4,8 +4,9 @@
 !>   v(n+1/2) = v(n-1/2) + dt M^-1 (f_ext(n) - f_int(u(n)) - C v(n))          (CD-1)
 !>   u(n+1)   = u(n) + dt v(n+1/2)                                             (CD-2)
 !>
-!> with C = alpha M and v(n) = (v(n-1/2) + v(n+1/2))/2, which makes the
-!> damping term semi-implicit and keeps it unconditionally stable:
+!> with C = alpha M (alpha per body, so per node) and v(n) = (v(n-1/2) +
+!> v(n+1/2))/2, which makes the damping term semi-implicit and keeps it
+!> unconditionally stable:
 !>   v(n+1/2) = [(1 - alpha dt/2) v(n-1/2) + dt M^-1 (f_ext - f_int)] / (1 + alpha dt/2).
 !> The first step starts from v(0) with a half step (dt/2).
 !>
@@ -72,7 +73,6 @@ contains
     first = state%step == 0
     h = dt
     if (first) h = 0.5_wp*dt
-    c = 0.5_wp*model%damping*h
     ke = 0.0_wp
     ie = 0.0_wp
     kh = 0.0_wp
@@ -86,6 +86,7 @@ contains
     do i = 1, model%nnode
       vold = state%v(:, i)
       if (model%has_damping) then
+        c = 0.5_wp*model%alpha(i)*h
         vnew = ((1.0_wp - c)*vold + h*model%minv(i)*(state%f_ext(:, i) - state%f_int(:, i)))/(1.0_wp + c)
       else
         vnew = vold + h*model%minv(i)*(state%f_ext(:, i) - state%f_int(:, i))
@@ -118,6 +119,7 @@ contains
       vfree = state%v(comp, i)
       vc = (target - state%u(comp, i))/dt
       m = model%mass(i)
+      c = 0.5_wp*model%alpha(i)*h
       if (first) then
         vm_c = state%cdof_vold(j)
       else
@@ -144,14 +146,14 @@ contains
       ke = 0.0_wp
       if (first) then
         do i = 1, model%nnode
-          ke = ke + model%mass(i)*(0.25_wp*sum((model%v0(:, i) + state%v(:, i))**2))
+          ke = ke + model%alpha(i)*model%mass(i)*(0.25_wp*sum((model%v0(:, i) + state%v(:, i))**2))
         end do
       else
         do i = 1, model%nnode
-          ke = ke + model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
+          ke = ke + model%alpha(i)*model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
         end do
       end if
-      state%energy%damping = state%energy%damping + model%damping*h*ke
+      state%energy%damping = state%energy%damping + h*ke
     end if
   end subroutine predict_motion
 

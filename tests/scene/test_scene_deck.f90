@@ -64,6 +64,8 @@ program test_scene_deck
       new_test('bad: poisson too low', bad_poisson_too_low), &
       new_test('bad: density nonpositive', bad_density_nonpositive), &
       new_test('bad: thickness nonpositive', bad_thickness_nonpositive), &
+      new_test('bad: body damping negative', bad_body_damping_negative), &
+      new_test('body damping: own value, else the &time damping', test_body_damping), &
       new_test('bad: hypothesis unknown', bad_hypothesis_unknown), &
       new_test('bad: duplicate body name', bad_duplicate_body_name), &
       new_test('bad: t end missing', bad_t_end_missing), &
@@ -873,6 +875,33 @@ contains
       "&time t_end = 1.0 /", &
       2, [character(len=FRAG_LEN) :: "&body 'a'", "'thickness'", "> 0"])
   end subroutine bad_thickness_nonpositive
+
+  subroutine bad_body_damping_negative(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'body_damping_negative', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0, damping = -1.0 /" // NL // &
+      "&time t_end = 1.0 /", &
+      2, [character(len=FRAG_LEN) :: "&body 'a'", "'damping'", ">= 0"])
+  end subroutine bad_body_damping_negative
+
+  !> A body's own damping is kept; a body without one takes &time damping.
+  subroutine test_body_damping(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(scene_t) :: scene
+    type(error_t) :: err
+    call write_lines(failure, 'scene_body_damping.nml', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0, damping = 5.0 /" // NL // &
+      "&body name = 'b', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0, damping = 2.0 /")
+    if (allocated(failure)) return
+    call read_scene('scene_body_damping.nml', scene, err)
+    call check(failure, .not. err%failed(), 'deck refused')
+    if (allocated(failure)) return
+    call check(failure, scene%bodies(1)%damping == 5.0_wp, 'body a lost its own damping')
+    call check(failure, scene%bodies(2)%damping == 2.0_wp, 'body b did not take the &time damping')
+  end subroutine test_body_damping
 
   subroutine bad_hypothesis_unknown(failure)
     type(failure_t), allocatable, intent(out) :: failure

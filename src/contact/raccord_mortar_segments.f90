@@ -1,0 +1,211 @@
+!> Geometry and basis functions of mortar matching ("raccord integral",
+!> paper sections 2-3; method brief section 5; doc/theory-contact-mortar.md):
+!> slave nodal normals, the interpolated slave normal field, the two
+!> projections of the segmentation (a master point onto a slave segment
+!> along the slave normal field; a slave point along its normal onto a
+!> master segment), and the multiplier functions psi_j of M_h^1 and M_h^0
+!> (equations (8)-(11)) restricted to one slave segment.
+!>
+!> Multipliers live on the chain of ALL slave trace nodes (corners and, on
+!> 3-node edges, mid-side nodes). On a segment with parameter xi in [-1, 1]
+!> its chain nodes sit at xi = -1, +1 (and 0 for a 3-node edge):
+!>   P1: hats on the chain intervals ([-1, 1] for 2-node edges, [-1, 0] and
+!>       [0, 1] for 3-node edges);
+!>   P0: 1 on the dual cell of the node, bounded by the chain intervals'
+!>       midpoints z_i (xi = 0, or xi = -1/2 and +1/2).
+module raccord_mortar_segments
+  use raccord_kinds, only: wp
+  use raccord_shape, only: shape_line
+  use raccord_scene, only: MULT_P0
+  use raccord_segment, only: segment_point
+  implicit none
+  private
+
+  !> Parameter of local node a (start, end, mid) on a segment.
+  real(wp), parameter, public :: NODE_XI(3) = [-1.0_wp, 1.0_wp, 0.0_wp]
+
+  public :: outward_normal, normal_field, project_along_field, intersect_ray, multiplier_basis, &
+    multiplier_breaks, cross2
+
+contains
+
+  !> z-component of the cross product of two plane vectors.
+  pure real(wp) function cross2(a, b)
+    real(wp), intent(in) :: a(2), b(2)
+    cross2 = a(1)*b(2) - a(2)*b(1)
+  end function cross2
+
+  !> Unit outward normal of a segment at xi: the tangent turned clockwise
+  !> (chains run counter-clockwise around their body).
+  pure function outward_normal(nen, xs, xi) result(n)
+    integer, intent(in) :: nen
+    real(wp), intent(in) :: xs(2, 3), xi
+    real(wp) :: n(2), p(2), t(2)
+    call segment_point(nen, xs, xi, p, t)
+    n = [t(2), -t(1)]/max(norm2(t), tiny(1.0_wp))
+  end function outward_normal
+
+  !> Slave normal field at xi, interpolated from the nodal normals nn(2, nen)
+  !> (start, end, mid) with the segment's shape functions, and its
+  !> derivative; not normalised (only its direction is used for rays).
+  pure subroutine normal_field(nen, nn, xi, n, dn)
+    integer, intent(in) :: nen
+    real(wp), intent(in) :: nn(2, 3), xi
+    real(wp), intent(out) :: n(2), dn(2)
+    real(wp) :: sh(3), dsh(3)
+    call shape_line(nen, xi, sh, dsh)
+    n = matmul(nn(:, 1:nen), sh(1:nen))
+    dn = matmul(nn(:, 1:nen), dsh(1:nen))
+  end subroutine normal_field
+
+  !> Slave parameter xi in [-1, 1] of the point p seen along the slave
+  !> normal field: the root of F(xi) = (p - x_s(xi)) x n(xi). F is monotone
+  !> on sane meshes; when it keeps one sign on [-1, 1] the point lies beyond
+  !> an end and that end is returned (the segmentation clips to it anyway).
+  !> Closed form for a straight segment with one normal (F linear: one
+  !> Newton step); bracketed Newton otherwise.
+  pure real(wp) function project_along_field(nen, xs, nn, p) result(xi)
+    integer, intent(in) :: nen
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3), p(2)
+    xi = bracketed_root(1, nen, xs, nn, p, [0.0_wp, 0.0_wp])
+  end function project_along_field
+
+  !> Master parameter eta in [-1, 1] where the line q + alpha n meets the
+  !> master segment xm: root of G(eta) = (x_m(eta) - q) x n. Closed form for
+  !> a 2-node master (G linear), bracketed Newton for a 3-node one.
+  pure real(wp) function intersect_ray(nen, xm, q, n) result(eta)
+    integer, intent(in) :: nen
+    real(wp), intent(in) :: xm(2, 3), q(2), n(2)
+    real(wp) :: dummy(2, 3)
+    dummy = 0.0_wp
+    eta = bracketed_root(2, nen, xm, dummy, q, n)
+  end function intersect_ray
+
+  !> Root on [-1, 1] of F (kind 1: along the normal field of segment xs;
+  !> kind 2: ray q + alpha n against segment xs), Newton kept inside a
+  !> shrinking sign-change bracket (bisection when a step leaves it).
+  pure real(wp) function bracketed_root(kind, nen, xs, nn, q, n) result(s)
+    integer, intent(in) :: kind, nen
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3), q(2), n(2)
+    real(wp) :: lo, hi, flo, fhi, f, fp, snew
+    integer :: it
+    lo = -1.0_wp
+    hi = 1.0_wp
+    call eval(lo, flo, fp)
+    call eval(hi, fhi, fp)
+    if (flo == 0.0_wp) then
+      s = lo
+      return
+    end if
+    if (fhi == 0.0_wp) then
+      s = hi
+      return
+    end if
+    if (sign(1.0_wp, flo) == sign(1.0_wp, fhi)) then
+      ! No root inside: the side where |F| grows away from the root is out.
+      if (abs(flo) < abs(fhi)) then
+        s = lo
+      else
+        s = hi
+      end if
+      return
+    end if
+    ! Start from the chord (secant) guess: exact when F is linear.
+    s = lo - flo*(hi - lo)/(fhi - flo)
+    do it = 1, 60
+      call eval(s, f, fp)
+      if (f == 0.0_wp) return
+      if (sign(1.0_wp, f) == sign(1.0_wp, flo)) then
+        lo = s
+        flo = f
+      else
+        hi = s
+        fhi = f
+      end if
+      if (fp /= 0.0_wp) then
+        snew = s - f/fp
+      else
+        snew = 0.5_wp*(lo + hi)
+      end if
+      if (snew <= lo .or. snew >= hi) snew = 0.5_wp*(lo + hi)
+      if (abs(snew - s) <= 4.0_wp*epsilon(1.0_wp)) then
+        s = snew
+        return
+      end if
+      s = snew
+    end do
+  contains
+    pure subroutine eval(t, f, fp)
+      real(wp), intent(in) :: t
+      real(wp), intent(out) :: f, fp
+      real(wp) :: x(2), dx(2), m(2), dm(2)
+      call segment_point(nen, xs, t, x, dx)
+      if (kind == 1) then
+        call normal_field(nen, nn, t, m, dm)
+        f = cross2(q - x, m)
+        fp = cross2(-dx, m) + cross2(q - x, dm)
+      else
+        f = cross2(x - q, n)
+        fp = cross2(dx, n)
+      end if
+    end subroutine eval
+  end function bracketed_root
+
+  !> Interior discontinuities (P0) or kinks (P1 on 3-node edges) of the
+  !> multiplier functions on one segment, ascending: the mortar segments are
+  !> split there so that the Gauss rule sees polynomials.
+  pure subroutine multiplier_breaks(nen, multiplier, nb, brk)
+    integer, intent(in) :: nen, multiplier
+    integer, intent(out) :: nb
+    real(wp), intent(out) :: brk(2)
+    brk = 0.0_wp
+    if (nen == 2) then
+      nb = merge(1, 0, multiplier == MULT_P0)
+    else if (multiplier == MULT_P0) then
+      nb = 2
+      brk = [-0.5_wp, 0.5_wp]
+    else
+      nb = 1
+    end if
+  end subroutine multiplier_breaks
+
+  !> psi(a) at xi of the multiplier of local node a (start, end, mid) on
+  !> one segment. At a break the right-hand value is taken; Gauss points
+  !> never sit on a break.
+  pure subroutine multiplier_basis(nen, multiplier, xi, psi)
+    integer, intent(in) :: nen, multiplier
+    real(wp), intent(in) :: xi
+    real(wp), intent(out) :: psi(3)
+    psi = 0.0_wp
+    if (multiplier == MULT_P0) then
+      ! Dual cells [z_i, z_i+1] around each chain node (paper, W_h^0).
+      if (nen == 2) then
+        if (xi < 0.0_wp) then
+          psi(1) = 1.0_wp
+        else
+          psi(2) = 1.0_wp
+        end if
+      else
+        if (xi < -0.5_wp) then
+          psi(1) = 1.0_wp
+        else if (xi > 0.5_wp) then
+          psi(2) = 1.0_wp
+        else
+          psi(3) = 1.0_wp
+        end if
+      end if
+    else
+      ! Hats on the chain intervals (paper, W_h^1).
+      if (nen == 2) then
+        psi(1) = 0.5_wp*(1.0_wp - xi)
+        psi(2) = 0.5_wp*(1.0_wp + xi)
+      else if (xi < 0.0_wp) then
+        psi(1) = -xi
+        psi(3) = 1.0_wp + xi
+      else
+        psi(2) = xi
+        psi(3) = 1.0_wp - xi
+      end if
+    end if
+  end subroutine multiplier_basis
+end module raccord_mortar_segments
