@@ -21,6 +21,7 @@ module raccord_contact_pair
   use raccord_constraint_set, only: constraint_set_t
   use raccord_multiplier_solver, only: solver_work_t, solve_multipliers, ST_OPEN, ST_STICK, ST_SLIP
   use raccord_node_to_segment, only: build_node_to_segment
+  use raccord_mortar, only: mortar_work_t, init_mortar, build_mortar
   implicit none
   private
 
@@ -37,6 +38,7 @@ module raccord_contact_pair
     type(constraint_set_t) :: cs
     type(bins_t) :: bins
     type(solver_work_t) :: work
+    type(mortar_work_t) :: mortar                  !< mortar scratch (method mortar only)
     ! Per slave surface node, kept between steps (status is the warm start).
     integer, allocatable :: status(:)
     real(wp), allocatable :: sigma(:), gap(:), lam_n(:), lam_t(:), pressure(:), shear(:), slip(:), trib(:)
@@ -76,15 +78,14 @@ contains
       associate (spec => scene%contacts(k), pair => pairs(k))
         where = 'scene ' // scene%path // ': &contact_pair #' // str(k) // ' (slave ''' // trim(spec%slave) // &
           ''', master ''' // trim(spec%master) // ''')'
-        if (spec%method == METHOD_MORTAR) then
-          call raise_error(err, EXIT_INPUT, where // ': method ''mortar'' is not available in this version; ' // &
-            'use method = ''node_to_segment''.')
-          return
-        end if
         call build_contact_surface(mesh, spec%slave, where // ' slave', pair%slave, err)
         if (err%failed()) return
         call build_contact_surface(mesh, spec%master, where // ' master', pair%master, err)
         if (err%failed()) return
+        if (spec%method == METHOD_MORTAR) then
+          call init_mortar(pair%slave, pair%master, spec%multiplier, where, pair%mortar, err)
+          if (err%failed()) return
+        end if
         bs = surface_body(model, pair%slave)
         bm = surface_body(model, pair%master)
         if (bs == 0 .or. bm == 0) then
@@ -153,6 +154,9 @@ contains
     call load_surface(pair%slave)
     call load_surface(pair%master)
     select case (pair%method)
+    case (METHOD_MORTAR)
+      call build_mortar(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, pair%multiplier, &
+        pair%bins, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
         pair%bins, pair%trib, pair%cs)

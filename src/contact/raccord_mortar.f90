@@ -1,0 +1,390 @@
+!> Mortar matching ("raccord integral", paper sections 2-3, equations
+!> (8)-(19); method brief section 5; doc/theory-contact-mortar.md).
+!>
+!> One constraint per slave chain node j whose multiplier psi_j meets the
+!> master: its row holds -G1(i, j) on slave nodes i and +G21(a, j) on master
+!> nodes a, with (paper, after (15) and (16))
+!>   G1(i, j)  = integral of phi_i psi_j dGamma,   G21(a, j) = integral of phi_a psi_j dGamma,
+!> integrated over the part of the slave surface that faces the master
+!> within `reach`. The multiplier solver then imposes (19) on G1 lambda and
+!> on the nodal gap G1^-1 g_w (raccord_multiplier_solver).
+!>
+!> Geometry (nodal normals, segmentation, integrals) is taken on x, the
+!> configuration at t(n); gaps on the predicted positions xpred, slip on the
+!> increments du: the constraint on u(n+1) stays linear, and the predicted
+!> surface, which lacks this step's contact force, never tilts the normals
+!> (see raccord_node_to_segment).
+!>
+!> Segmentation: on each slave segment the ends of every candidate master
+!> segment are projected along the interpolated slave normal field; the
+!> overlap of [-1, 1] with the projected interval, split at the
+!> discontinuities of psi, gives the mortar segments; each is integrated by
+!> 3-point Gauss, with the master parameter at each point where the slave
+!> normal ray meets the master segment. Candidates come from the bins of
+!> raccord_contact_search, so the cost is linear in the surface nodes.
+module raccord_mortar
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_scene, only: MULT_P1, MULT_P0, MULT_DUAL
+  use raccord_shape, only: shape_line
+  use raccord_contact_surface, only: contact_surface_t
+  use raccord_contact_search, only: bins_t, build_bins, query_bins
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  use raccord_segment, only: segment_point
+  use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, project_along_field, intersect_ray, &
+    multiplier_basis, multiplier_breaks
+  implicit none
+  private
+
+  ! 3-point Gauss-Legendre on [-1, 1]: exact to degree 5 (the integrands are
+  ! of degree <= 3 on straight segments; see the theory note).
+  real(wp), parameter :: GS(3) = [-0.774596669241483377_wp, 0.0_wp, 0.774596669241483377_wp]
+  real(wp), parameter :: GW(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
+  ! Overlaps narrower than this in the slave parameter are round-off slivers
+  ! of coincident ends (matching meshes), not contact.
+  real(wp), parameter :: XI_SLIVER = 1.0e-12_wp
+  ! A multiplier whose overlap integral is below this fraction of the
+  ! shortest slave segment does not become a constraint.
+  real(wp), parameter :: LEN_TOL = 1.0e-9_wp
+
+  !> Per-pair scratch, sized once by init_mortar; the master-entry buffers
+  !> grow only (no allocation per step once the contact zone is known).
+  type, public :: mortar_work_t
+    integer :: multiplier = MULT_P1
+    integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
+    integer, allocatable :: nadj(:)           !< (nnode) segments a chain node belongs to (1 or 2)
+    integer, allocatable :: adj_seg(:,:)      !< (2, nnode) those segments
+    integer, allocatable :: adj_loc(:,:)      !< (2, nnode) the node's local index there
+    real(wp), allocatable :: nrm(:,:)         !< (2, nnode) slave nodal normals (outward)
+    real(wp), allocatable :: g1loc(:,:,:)     !< (3, 3, nseg) G1 contributions: (phi local i, psi local j)
+    real(wp), allocatable :: len(:)           !< (nnode) integral of psi_j over the overlap
+    integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
+    integer, allocatable :: mptr(:)           !< (nseg + 1) start of each slave segment's master entries
+    integer :: nment = 0
+    integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
+    real(wp), allocatable :: ment_w(:)                  !< G21 contribution
+    logical, allocatable :: mark(:)           !< (master nseg) candidate already seen
+    integer, allocatable :: cand(:)           !< candidates of the current slave segment
+  end type mortar_work_t
+
+  public :: init_mortar, build_mortar
+
+contains
+
+  !> Check that mortar applies to this pair and size the scratch. `where`
+  !> names the scene entry in messages.
+  subroutine init_mortar(slave, master, multiplier, where, w, err)
+    type(contact_surface_t), intent(in) :: slave, master
+    integer, intent(in) :: multiplier
+    character(len=*), intent(in) :: where
+    type(mortar_work_t), intent(out) :: w
+    type(error_t), intent(inout) :: err
+    integer :: k, a, c, stride, ns, nn
+
+    if (multiplier == MULT_DUAL) then
+      call raise_error(err, EXIT_INPUT, where // ': multiplier ''dual'' (Wohlmuth''s dual basis) is not ' // &
+        'available with method ''mortar'' in this version; use multiplier = ''P1'' or ''P0'' (paper, (8)-(11)).')
+      return
+    end if
+    if (multiplier /= MULT_P1 .and. multiplier /= MULT_P0) then
+      call raise_error(err, EXIT_INPUT, where // ': unknown mortar multiplier space; use ''P1'' or ''P0''.')
+      return
+    end if
+    if (slave%closed) then
+      ! A closed slave chain would couple its first and last multipliers
+      ! in G1, outside the band that the constraint set keeps.
+      call raise_error(err, EXIT_INPUT, where // ': the slave surface ''' // slave%name // ''' is a closed ' // &
+        'loop; mortar needs an open slave chain. Make the slave surface the part of the boundary that ' // &
+        'may touch (the master may stay closed).')
+      return
+    end if
+    w%multiplier = multiplier
+    ns = slave%nseg
+    nn = slave%nnode
+    stride = slave%nen_seg - 1
+    allocate(w%pos(3, ns), source=0)
+    allocate(w%nadj(nn), w%adj_seg(2, nn), w%adj_loc(2, nn), w%cidx(nn), source=0)
+    allocate(w%nrm(2, nn), w%len(nn), source=0.0_wp)
+    allocate(w%g1loc(3, 3, ns), source=0.0_wp)
+    allocate(w%mptr(ns + 1), source=1)
+    allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
+    allocate(w%mark(master%nseg), source=.false.)
+    allocate(w%cand(max(16, master%nseg)))
+    ! Local node a of slave segment k sits at chain position stride*(k-1)+1
+    ! (start), stride*k+1 (end), stride*(k-1)+2 (mid): the order of
+    ! contact_surface_t%node.
+    do k = 1, ns
+      w%pos(1, k) = stride*(k - 1) + 1
+      w%pos(2, k) = stride*k + 1
+      if (slave%nen_seg == 3) w%pos(3, k) = stride*(k - 1) + 2
+      do a = 1, slave%nen_seg
+        c = w%pos(a, k)
+        w%nadj(c) = w%nadj(c) + 1
+        w%adj_seg(w%nadj(c), c) = k
+        w%adj_loc(w%nadj(c), c) = a
+      end do
+    end do
+  end subroutine init_mortar
+
+  !> Constraints of the slave multipliers that meet the master within
+  !> `reach`: geometry on x (t(n)), weighted gaps on xpred (predicted
+  !> t(n+1)), weighted slip on the increments du. `multiplier` is MULT_P1 or
+  !> MULT_P0 (as given to init_mortar).
+  subroutine build_mortar(slave, master, x, xpred, du, reach, multiplier, bins, cs, w)
+    type(contact_surface_t), intent(in) :: slave, master
+    real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
+    real(wp), intent(in) :: reach
+    integer, intent(in) :: multiplier
+    type(bins_t), intent(inout) :: bins
+    type(constraint_set_t), intent(inout) :: cs
+    type(mortar_work_t), intent(inout) :: w
+    integer :: k, a, c, nen, ncand, ix, iy, nx, ny, first, last, q, l, t
+    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), p(2)
+
+    w%multiplier = multiplier
+    nen = slave%nen_seg
+    call build_bins(bins, x, master%seg, master%nen_seg, reach)
+    call slave_normals(slave, x, w)
+    w%nment = 0
+    w%mptr(1) = 1
+    slave_segments: do k = 1, slave%nseg
+      call load_segment(slave, x, k, xs)
+      nn = 0.0_wp
+      do a = 1, nen
+        nn(:, a) = w%nrm(:, w%pos(a, k))
+      end do
+      w%g1loc(:, :, k) = 0.0_wp
+      lo = xs(:, 1)
+      hi = xs(:, 1)
+      do a = 2, nen
+        lo = min(lo, xs(:, a))
+        hi = max(hi, xs(:, a))
+      end do
+      ! Candidates: the master segments binned in every cell the slave
+      ! segment's box covers (sample points one cell apart reach them all).
+      ncand = 0
+      nx = ceiling((hi(1) - lo(1))/bins%cell)
+      ny = ceiling((hi(2) - lo(2))/bins%cell)
+      do iy = 0, ny
+        do ix = 0, nx
+          p = [min(lo(1) + real(ix, wp)*bins%cell, hi(1)), min(lo(2) + real(iy, wp)*bins%cell, hi(2))]
+          call query_bins(bins, p, first, last)
+          do q = first, last
+            l = bins%item(q)
+            if (w%mark(l)) cycle
+            if (bins%box(1, l) > hi(1) .or. bins%box(3, l) < lo(1) .or. &
+                bins%box(2, l) > hi(2) .or. bins%box(4, l) < lo(2)) cycle
+            w%mark(l) = .true.
+            ncand = ncand + 1
+            if (ncand > size(w%cand)) call grow_int(w%cand, 2*size(w%cand), ncand - 1)
+            w%cand(ncand) = l
+          end do
+        end do
+      end do
+      do t = 1, ncand
+        l = w%cand(t)
+        w%mark(l) = .false.
+        call integrate_overlap(slave, master, x, k, l, xs, nn, reach, w)
+      end do
+      w%mptr(k + 1) = w%nment + 1
+    end do slave_segments
+
+    ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
+    w%len(1:slave%nnode) = 0.0_wp
+    do k = 1, slave%nseg
+      do a = 1, nen
+        c = w%pos(a, k)
+        w%len(c) = w%len(c) + sum(w%g1loc(1:nen, a, k))
+      end do
+    end do
+    call assemble_rows(slave, xpred, du, w, cs)
+  end subroutine build_mortar
+
+  !> Constraint rows in chain order from the per-segment integrals.
+  subroutine assemble_rows(slave, xpred, du, w, cs)
+    type(contact_surface_t), intent(in) :: slave
+    real(wp), intent(in) :: xpred(:,:), du(:,:)
+    type(mortar_work_t), intent(inout) :: w
+    type(constraint_set_t), intent(inout) :: cs
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen
+    real(wp) :: v, tol
+
+    nen = slave%nen_seg
+    tol = LEN_TOL*slave%h_min
+    m = 0
+    do c = 1, slave%nnode
+      if (w%len(c) > tol) then
+        m = m + 1
+        w%cidx(c) = m
+      else
+        w%cidx(c) = 0
+      end if
+    end do
+    call cs_start(cs, slave%nnode)
+    band = 0
+    do c = 1, slave%nnode
+      j = w%cidx(c)
+      if (j == 0) cycle
+      call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%len(c), slave%s0(c))
+      cs%g1(:, j) = 0.0_wp
+      do t = 1, w%nadj(c)
+        k = w%adj_seg(t, c)
+        b = w%adj_loc(t, c)
+        ! Slave entries -G1(i, j), and the band of G1 between constraints
+        ! (constraint numbering: g1(d, j) = G1(j + d, j)).
+        do ai = 1, nen
+          v = w%g1loc(ai, b, k)
+          if (v == 0.0_wp) cycle
+          call cs_add_entry(cs, slave%seg(ai, k), -v)
+          i = w%cidx(w%pos(ai, k))
+          if (i > 0) then
+            d = i - j
+            cs%g1(d, j) = cs%g1(d, j) + v
+            band = max(band, abs(d))
+          end if
+        end do
+        ! Master entries +G21(a, j).
+        do e = w%mptr(k), w%mptr(k + 1) - 1
+          if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
+        end do
+      end do
+      call cs_finish_row(cs, xpred, du)
+    end do
+    cs%g1_band = band
+  end subroutine assemble_rows
+
+  !> Mortar segments of slave segment k against master segment l, and their
+  !> contributions to G1 (g1loc) and G21 (master entries).
+  subroutine integrate_overlap(slave, master, x, k, l, xs, nn, reach, w)
+    type(contact_surface_t), intent(in) :: slave, master
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: k, l
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3), reach
+    type(mortar_work_t), intent(inout) :: w
+    integer :: nen, nenm, nb, ib, g, a, b, cm
+    real(wp) :: xm(2, 3), xi1, xi2, s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
+      pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3)
+
+    nen = slave%nen_seg
+    nenm = master%nen_seg
+    call load_segment(master, x, l, xm)
+    ! Segmentation (method brief section 5): the master ends seen from the
+    ! slave along its normal field; the overlap in the slave parameter.
+    xi1 = project_along_field(nen, xs, nn, xm(:, 1))
+    xi2 = project_along_field(nen, xs, nn, xm(:, 2))
+    s0 = min(xi1, xi2)
+    s1 = max(xi1, xi2)
+    if (s1 - s0 <= XI_SLIVER) return
+    ! Only a master that faces the slave, within reach, counts (tested at
+    ! the middle of the overlap: no coupling to far or back-facing parts).
+    xi = 0.5_wp*(s0 + s1)
+    call segment_point(nen, xs, xi, ps, ts)
+    call normal_field(nen, nn, xi, n, dn)
+    n = n/max(norm2(n), tiny(1.0_wp))
+    eta = intersect_ray(nenm, xm, ps, n)
+    call segment_point(nenm, xm, eta, pm, tm)
+    if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) return
+    if (abs(dot_product(pm - ps, n)) > reach) return
+
+    ! Split at the discontinuities of psi (P0: dual-cell bounds z_i; P1 on
+    ! 3-node edges: the mid node) so that each piece is smooth.
+    call multiplier_breaks(nen, w%multiplier, nb, brk)
+    bounds(1) = s0
+    a = 1
+    do ib = 1, nb
+      if (brk(ib) > s0 .and. brk(ib) < s1) then
+        a = a + 1
+        bounds(a) = brk(ib)
+      end if
+    end do
+    a = a + 1
+    bounds(a) = s1
+    mloc = 0.0_wp
+    pieces: do ib = 1, a - 1
+      if (bounds(ib + 1) - bounds(ib) <= XI_SLIVER) cycle
+      do g = 1, 3
+        xi = 0.5_wp*(bounds(ib) + bounds(ib + 1)) + 0.5_wp*(bounds(ib + 1) - bounds(ib))*GS(g)
+        wgt = 0.5_wp*(bounds(ib + 1) - bounds(ib))*GW(g)
+        call segment_point(nen, xs, xi, ps, ts)
+        dg = norm2(ts)*wgt                       ! dGamma = |dx_s/dxi| dxi
+        call normal_field(nen, nn, xi, n, dn)
+        eta = intersect_ray(nenm, xm, ps, n)
+        call shape_line(nen, xi, ns, dns)
+        call shape_line(nenm, eta, nm, dnm)
+        call multiplier_basis(nen, w%multiplier, xi, psi)
+        do b = 1, nen
+          if (psi(b) == 0.0_wp) cycle
+          ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
+          w%g1loc(1:nen, b, k) = w%g1loc(1:nen, b, k) + ns(1:nen)*psi(b)*dg
+          mloc(1:nenm, b) = mloc(1:nenm, b) + nm(1:nenm)*psi(b)*dg
+        end do
+      end do
+    end do pieces
+    do b = 1, nen
+      do cm = 1, nenm
+        if (mloc(cm, b) == 0.0_wp) cycle
+        if (w%nment == size(w%ment_node)) call grow_entries(w)
+        w%nment = w%nment + 1
+        w%ment_node(w%nment) = master%seg(cm, l)
+        w%ment_loc(w%nment) = b
+        w%ment_w(w%nment) = mloc(cm, b)
+      end do
+    end do
+  end subroutine integrate_overlap
+
+  !> Slave nodal normals: the normalised mean of the outward unit normals of
+  !> the segments meeting at the node, each taken at the node (for 3-node
+  !> segments the quadratic's own tangent there).
+  subroutine slave_normals(slave, x, w)
+    type(contact_surface_t), intent(in) :: slave
+    real(wp), intent(in) :: x(:,:)
+    type(mortar_work_t), intent(inout) :: w
+    integer :: k, a, c
+    real(wp) :: xs(2, 3)
+    w%nrm(:, 1:slave%nnode) = 0.0_wp
+    do k = 1, slave%nseg
+      call load_segment(slave, x, k, xs)
+      do a = 1, slave%nen_seg
+        c = w%pos(a, k)
+        w%nrm(:, c) = w%nrm(:, c) + outward_normal(slave%nen_seg, xs, NODE_XI(a))
+      end do
+    end do
+    do c = 1, slave%nnode
+      w%nrm(:, c) = w%nrm(:, c)/max(norm2(w%nrm(:, c)), tiny(1.0_wp))
+    end do
+  end subroutine slave_normals
+
+  subroutine load_segment(surf, x, k, xs)
+    type(contact_surface_t), intent(in) :: surf
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: k
+    real(wp), intent(out) :: xs(2, 3)
+    integer :: a
+    xs = 0.0_wp
+    do a = 1, surf%nen_seg
+      xs(:, a) = x(:, surf%seg(a, k))
+    end do
+  end subroutine load_segment
+
+  !> Double the master-entry buffers, keeping the entries written so far.
+  subroutine grow_entries(w)
+    type(mortar_work_t), intent(inout) :: w
+    integer :: cap
+    real(wp), allocatable :: tr(:)
+    cap = 2*size(w%ment_node)
+    call grow_int(w%ment_node, cap, w%nment)
+    call grow_int(w%ment_loc, cap, w%nment)
+    allocate(tr(cap))
+    tr(1:w%nment) = w%ment_w(1:w%nment)
+    call move_alloc(tr, w%ment_w)
+  end subroutine grow_entries
+
+  subroutine grow_int(a, cap, keep)
+    integer, allocatable, intent(inout) :: a(:)
+    integer, intent(in) :: cap, keep
+    integer, allocatable :: t(:)
+    allocate(t(cap))
+    t(1:keep) = a(1:keep)
+    call move_alloc(t, a)
+  end subroutine grow_int
+end module raccord_mortar
