@@ -29,6 +29,7 @@ program test_contact_mortar
   call run_tests('contact_mortar', [ &
     new_test('G1 on a uniform slave mesh: tridiag(h/6, 2h/3, h/6) for P1 (Q4)', test_g1_p1), &
     new_test('G1 on a uniform slave mesh: tridiag(h/8, 3h/4, h/8) for P0 (Q4)', test_g1_p0), &
+    new_test('G1 on a uniform Q8 slave mesh: hand-integrated edge matrices, P1 and P0', test_g1_q8), &
     new_test('G21 reproduces 1 and x on non-matching meshes (Q4, Q8; P1, P0)', test_g21_reproduces), &
     new_test('G21 equals G1 on matching meshes (Q4, Q8; P1, P0)', test_g21_matching), &
     new_test('dual multipliers and closed slave chains are refused with a message', test_refusals), &
@@ -145,6 +146,59 @@ contains
     ! Dual cells: N_i over its own half segment 3h/8, over the neighbour's h/8.
     call g1_uniform(failure, MULT_P0, 0.75_wp, 0.125_wp, 0.375_wp, 0.125_wp)
   end subroutine test_g1_p0
+
+  !> Q8 slave edges of length H, multipliers on the chain of all trace
+  !> nodes (sub-intervals of length H/2). Edge matrices E(i, j) = integral
+  !> of N_i psi_j over one edge, by hand (local order start, end, mid; in
+  !> units of H/48):
+  !>   P1 hats:       psi_start: ( 7, -1,  6)  psi_mid: (2, 2, 20)
+  !>   P0 dual cells: psi_start: ( 8, -1,  5)  psi_mid: (1, 1, 22)
+  !> (psi_end mirrors psi_start). G1 is not symmetric: N_start is negative
+  !> on the far half of its edge while psi_start is not.
+  subroutine test_g1_q8(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp), parameter :: p1(3, 3) = reshape([7, -1, 6, -1, 7, 6, 2, 2, 20], [3, 3])/48.0_wp
+    real(wp), parameter :: p0(3, 3) = reshape([8, -1, 5, -1, 8, 5, 1, 1, 22], [3, 3])/48.0_wp
+    integer, parameter :: mults(2) = [MULT_P1, MULT_P0]
+    type(mesh_t) :: mesh
+    type(contact_surface_t) :: slave, master
+    type(constraint_set_t) :: cs
+    real(wp), allocatable :: g1(:,:), expect(:,:)
+    real(wp) :: h, worst, edge(3, 3)
+    integer :: im, k, a, b, pos(3), j, d
+    worst = 0.0_wp
+    h = 0.2_wp
+    do im = 1, 2
+      call coupling(ELEM_Q8, mults(im), 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure)
+      if (allocated(failure)) return
+      call check(failure, cs%m == slave%nnode, 'every slave node should carry a multiplier')
+      if (allocated(failure)) return
+      edge = merge(p1, p0, mults(im) == MULT_P1)
+      allocate(expect(slave%nnode, slave%nnode), source=0.0_wp)
+      do k = 1, 5
+        pos = [2*k - 1, 2*k + 1, 2*k]
+        do b = 1, 3
+          do a = 1, 3
+            expect(pos(a), pos(b)) = expect(pos(a), pos(b)) + edge(a, b)*h
+          end do
+        end do
+      end do
+      call g1_matrix(slave, cs, g1)
+      worst = max(worst, maxval(abs(g1 - expect))/h)
+      call check(failure, maxval(abs(g1 - expect)) <= 1.0e-13_wp*h, 'Q8 G1 differs from the edge matrices')
+      ! Band storage, half bandwidth 2 (corner to corner across an edge).
+      do j = 1, cs%m
+        do d = -2, 2
+          if (j + d < 1 .or. j + d > cs%m) cycle
+          call check_close(failure, cs%g1(d, j), g1(j + d, j), 'band storage g1(d, j)', abs_tol=1.0e-15_wp)
+        end do
+      end do
+      call check(failure, cs%g1_band == 2, 'G1 of 3-node edges has half bandwidth 2')
+      deallocate(expect)
+      if (allocated(failure)) return
+    end do
+    write(*, '(a,es10.3)') '        max |G1 - edge matrices| / H = ', worst
+  end subroutine test_g1_q8
 
   !> sum_a G21(a, j) f(x_a) = sum_i G1(i, j) f(x_i) for f = 1 and f = x: the
   !> traces of both sides reproduce linear fields, and both sums are the
