@@ -22,14 +22,19 @@ module raccord_contact_search
 
 contains
 
-  !> Bin the segments seg(:, 1:nseg) (nodes of x) with boxes inflated by `reach`.
+  !> Bin the segments seg(:, 1:nseg) (nodes of x). Each segment's box is
+  !> inflated by its own length, capped by `reach`: a slave node further
+  !> than that from a segment along its normal is not its concern this step
+  !> (a step moves nodes by a small fraction of an element). Cells have the
+  !> mean inflated box size, so a node sees a few segments wherever the
+  !> surface is refined; large distant segments span several cells.
   subroutine build_bins(bins, x, seg, nen, reach)
     type(bins_t), intent(inout) :: bins
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: seg(:,:), nen
     real(wp), intent(in) :: reach
     integer :: k, j, nseg, i0, i1, j0, j1, ii, jj, c, total
-    real(wp) :: lo(2), hi(2), gl(2), gh(2), hmax
+    real(wp) :: lo(2), hi(2), gl(2), gh(2), r, mean_size
     nseg = size(seg, 2)
     if (.not. allocated(bins%box)) allocate(bins%box(4, nseg))
     if (size(bins%box, 2) < nseg) then
@@ -38,7 +43,7 @@ contains
     end if
     gl = huge(1.0_wp)
     gh = -huge(1.0_wp)
-    hmax = 0.0_wp
+    mean_size = 0.0_wp
     do k = 1, nseg
       lo = x(:, seg(1, k))
       hi = lo
@@ -46,15 +51,15 @@ contains
         lo = min(lo, x(:, seg(j, k)))
         hi = max(hi, x(:, seg(j, k)))
       end do
-      hmax = max(hmax, maxval(hi - lo))
-      ! A quadratic edge bulges by at most half its mid-node offset beyond
-      ! the box of its nodes; the reach covers it for sane meshes.
-      bins%box(:, k) = [lo - reach, hi + reach]
-      gl = min(gl, lo - reach)
-      gh = max(gh, hi + reach)
+      r = min(reach, norm2(x(:, seg(2, k)) - x(:, seg(1, k))))
+      ! A quadratic edge bulges beyond the box of its nodes by less than its
+      ! own length for any sane mesh: the inflation covers it.
+      bins%box(:, k) = [lo - r, hi + r]
+      gl = min(gl, lo - r)
+      gh = max(gh, hi + r)
+      mean_size = mean_size + maxval(hi - lo) + 2.0_wp*r
     end do
-    ! Cells about one segment plus reach wide, and never more than ~4 per segment.
-    bins%cell = max(hmax + 2.0_wp*reach, tiny(1.0_wp))
+    bins%cell = max(mean_size/real(max(nseg, 1), wp), tiny(1.0_wp))
     do while (real(ceiling((gh(1) - gl(1))/bins%cell), wp)*real(ceiling((gh(2) - gl(2))/bins%cell), wp) > &
               4.0_wp*real(nseg, wp) + 16.0_wp)
       bins%cell = 2.0_wp*bins%cell
