@@ -58,6 +58,7 @@ module raccord_mortar
     real(wp), allocatable :: nrm(:,:)         !< (2, nnode) slave nodal normals (outward)
     real(wp), allocatable :: g1loc(:,:,:)     !< (3, 3, nseg) G1 contributions: (phi local i, psi local j)
     real(wp), allocatable :: len(:)           !< (nnode) integral of psi_j over the overlap
+    real(wp), allocatable :: trib(:)          !< (nnode) integral of phi_j over the overlap (sum_k G1(j, k))
     integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
     integer, allocatable :: mptr(:)           !< (nseg + 1) start of each slave segment's master entries
     integer :: nment = 0
@@ -104,7 +105,7 @@ contains
     stride = slave%nen_seg - 1
     allocate(w%pos(3, ns), source=0)
     allocate(w%nadj(nn), w%adj_seg(2, nn), w%adj_loc(2, nn), w%cidx(nn), source=0)
-    allocate(w%nrm(2, nn), w%len(nn), source=0.0_wp)
+    allocate(w%nrm(2, nn), w%len(nn), w%trib(nn), source=0.0_wp)
     allocate(w%g1loc(3, 3, ns), source=0.0_wp)
     allocate(w%mptr(ns + 1), source=1)
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
@@ -190,11 +191,17 @@ contains
     end do slave_segments
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
+    ! And of each slave shape function: sum_k G1(j, k) (sum_k psi_k = 1), the
+    ! length the weighted multiplier (G1 lambda)_j acts on, so that stresses
+    ! (G1 lambda)_j / trib_j compare with node-to-segment's (and equal lambda
+    ! for a uniform pressure even where G1 is not symmetric, Q8 edges).
     w%len(1:slave%nnode) = 0.0_wp
+    w%trib(1:slave%nnode) = 0.0_wp
     do k = 1, slave%nseg
       do a = 1, nen
         c = w%pos(a, k)
         w%len(c) = w%len(c) + sum(w%g1loc(1:nen, a, k))
+        w%trib(c) = w%trib(c) + sum(w%g1loc(a, 1:nen, k))
       end do
     end do
     call assemble_rows(slave, xpred, du, w, cs)
@@ -225,7 +232,7 @@ contains
     do c = 1, slave%nnode
       j = w%cidx(c)
       if (j == 0) cycle
-      call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%len(c), slave%s0(c))
+      call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
       cs%g1(:, j) = 0.0_wp
       do t = 1, w%nadj(c)
         k = w%adj_seg(t, c)

@@ -3,12 +3,12 @@
 !> conditions of the paper, equation (19):
 !>   (G1 lambda)_j >= 0,  gn_j >= 0,  (G1 lambda)_j gn_j = 0,
 !>   |(G1 tau)_j| <= mu (G1 lambda)_j,  stick: gt_j = 0,  slip: (G1 tau)_j gt_j <= 0,
-!> where gn = G1^-1 g_w and gt = G1^-1 s_w are the nodal gap and slip at
+!> where gn = G1^-T g_w and gt = G1^-T s_w are the nodal gap and slip at
 !> t(n+1) after the correction dx = dt^2 M^-1 sum_j w_j (lambda_j n_j + tau_j t_j).
 !> (Signs: lambda >= 0 is a pressure; the paper writes sigma_n <= 0.)
 !>
 !> The correction is linear in the multipliers:
-!>   G1 gn = g_w* + dt^2 (Knn lambda + Knt tau),   G1 gt = s_w* + dt^2 (Ktn lambda + Ktt tau),
+!>   G1' gn = g_w* + dt^2 (Knn lambda + Knt tau),   G1' gt = s_w* + dt^2 (Ktn lambda + Ktt tau),
 !> with K = B M^-1 B' banded (B: the constraint rows). It is solved by a
 !> primal-dual active-set iteration (semismooth Newton for the complementarity
 !> functions min(F, c g) and the friction projection): for fixed open /
@@ -207,7 +207,7 @@ contains
       do d = -cs%g1_band, cs%g1_band
         k = j + d
         if (k < 1 .or. k > cs%m) cycle
-        ! G1 symmetric: G1(j, k) = G1(k, j) = g1(j - k, k).
+        ! G1(j, k) = g1(j - k, k).
         f(j) = f(j) + cs%g1(j - k, k)*v(k)
       end do
     end do
@@ -236,10 +236,13 @@ contains
     bw = max(w%kb, cs%g1_band)
     w%ab(:, 1:nu*m) = 0.0_wp
     do j = 1, m
-      ! Gap definition: G1 gn - dt^2 (Knn lambda + Knt tau) = g_w*.
+      ! Gap definition: G1' gn - dt^2 (Knn lambda + Knt tau) = g_w*. The
+      ! nodal gap pairs with the nodal force F = G1 lambda (F . gn = lambda . g_w),
+      ! so it is G1' that maps it to the weighted gap; G1 is not symmetric
+      ! on Q8 edges or where the contact zone ends inside a P0 dual cell.
       r = nu*(j - 1) + 1
       do k = max(1, j - bw), min(m, j + bw)
-        call put(r, nu*(k - 1) + 2, g1_at(cs, j, k))
+        call put(r, nu*(k - 1) + 2, g1_at(cs, k, j))
         if (abs(j - k) <= w%kb) then
           call put(r, nu*(k - 1) + 1, -dt2*w%knn(k - j, j))
           if (friction) call put(r, nu*(k - 1) + 3, -dt2*w%knt(k - j, j))
@@ -257,10 +260,10 @@ contains
         end do
       end if
       if (.not. friction) cycle
-      ! Slip definition: G1 gt - dt^2 (Ktn lambda + Ktt tau) = s_w*.
+      ! Slip definition: G1' gt - dt^2 (Ktn lambda + Ktt tau) = s_w*.
       r = nu*(j - 1) + 3
       do k = max(1, j - bw), min(m, j + bw)
-        call put(r, nu*(k - 1) + 4, g1_at(cs, j, k))
+        call put(r, nu*(k - 1) + 4, g1_at(cs, k, j))
         if (abs(j - k) <= w%kb) then
           call put(r, nu*(k - 1) + 1, -dt2*w%ktn(k - j, j))
           call put(r, nu*(k - 1) + 3, -dt2*w%ktt(k - j, j))

@@ -26,17 +26,8 @@ program test_contact_mortar
   use dynamics_support, only: one_body_scene, add_bc, add_body, add_pair, contact_step
   implicit none
 
-  character(len=32) :: arg
-
-  ! 'pinned': the known solver problem of doc/theory-contact-mortar.md
-  ! section 7, run by the disabled CTest entry contact_mortar_pinned.
-  call get_command_argument(1, arg)
-  if (arg == 'pinned') then
-    call run_tests('contact_mortar_pinned', [ &
-      new_test('pinned: Q8 strip pressed at its centre, nodal gap G1^-T g_w = 0 on closed nodes', test_nodal_gap_q8)])
-    stop
-  end if
   call run_tests('contact_mortar', [ &
+    new_test('Q8 strip pressed at its centre: nodal gap G1^-T g_w = 0 on closed nodes', test_nodal_gap_q8), &
     new_test('G1 on a uniform slave mesh: tridiag(h/6, 2h/3, h/6) for P1 (Q4)', test_g1_p1), &
     new_test('G1 on a uniform slave mesh: tridiag(h/8, 3h/4, h/8) for P0 (Q4)', test_g1_p0), &
     new_test('G1 on a uniform Q8 slave mesh: hand-integrated edge matrices, P1 and P0', test_g1_q8), &
