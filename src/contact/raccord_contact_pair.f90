@@ -45,7 +45,7 @@ module raccord_contact_pair
     ! Per constraint scratch, and per global node scratch (touched at surface nodes only).
     integer, allocatable :: st_c(:)
     real(wp), allocatable :: sg_c(:)
-    real(wp), allocatable :: xcur(:,:), xpred(:,:), dcur(:,:), fc(:,:), ft(:,:)
+    real(wp), allocatable :: xcur(:,:), xpred(:,:), dcur(:,:), fc(:,:), ft(:,:), nodal_normal(:,:)
     integer, allocatable :: touched(:)
     logical, allocatable :: mark(:)
     ! Step report.
@@ -114,7 +114,7 @@ contains
         end associate
         allocate(pair%xcur(2, model%nnode), pair%xpred(2, model%nnode), pair%dcur(2, model%nnode), &
           pair%fc(2, model%nnode), &
-          pair%ft(2, model%nnode), source=0.0_wp)
+          pair%ft(2, model%nnode), pair%nodal_normal(2, model%nnode), source=0.0_wp)
         allocate(pair%mark(model%nnode), source=.false.)
         allocate(pair%touched(pair%slave%nnode + pair%master%nnode))
       end associate
@@ -159,7 +159,7 @@ contains
         pair%bins, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
-        pair%bins, pair%trib, pair%cs)
+        pair%bins, pair%trib, pair%nodal_normal, pair%cs)
     end select
     m = pair%cs%m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.

@@ -4,6 +4,16 @@
 !> the master segment's nodes with the segment's shape functions at the
 !> projection point (G1 = I, G21 = N_a).
 !>
+!> The master's normal is continuous: averaged nodal normals interpolated
+!> along each segment with its shape functions, and the foot of a slave node
+!> is where that normal field passes through it. With the segments' own,
+!> piecewise-constant normals a node sliding across a convex master vertex
+!> finds its previous position a first-order distance inside the next
+!> segment's line, and the forward increment pushes it out: the contact
+!> force then does work, and on coarse meshes (the paper's scene, disc as
+!> slave) that pumped half the internal energy through the run. On a flat
+!> master both definitions coincide.
+!>
 !> Geometry (closest segment, projection point, normal) is taken on the
 !> configuration at t(n); the gap is that of the predicted positions at
 !> t(n+1) along it, so the constraint on u(n+1) is linear. The predicted
@@ -18,6 +28,7 @@ module raccord_node_to_segment
   use raccord_contact_search, only: bins_t, build_bins, query_bins
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
+  use raccord_mortar_segments, only: outward_normal, normal_field, project_along_field, cross2, NODE_XI
   implicit none
   private
 
@@ -28,15 +39,18 @@ contains
   !> Constraints of the slave nodes that project on the master within
   !> `reach` of it (gap between -reach and +reach): geometry on positions x
   !> (t(n)), gaps on xpred (predicted t(n+1)), slip on the increments du.
-  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, bins, trib, cs)
+  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, bins, trib, nodal_normal, cs)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
     real(wp), intent(in) :: reach
     type(bins_t), intent(inout) :: bins
     real(wp), intent(inout) :: trib(:)           !< (slave%nnode) scratch: tributary lengths
+    real(wp), intent(inout) :: nodal_normal(:,:) !< (2, nnode) scratch: master nodal normals
     type(constraint_set_t), intent(inout) :: cs
     integer :: i, p, first, last, q, k, best, nen, a
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
+    real(wp) :: nn(2, 3), dnf(2)
+    integer :: k2
     ! A foot up to 1 % of a segment beyond the end of the master chain still
     ! counts: a slave node that sits at the master's end (a common corner)
     ! projects a hair beyond it as soon as the end segment tilts.
@@ -44,6 +58,7 @@ contains
     logical :: beyond
 
     nen = master%nen_seg
+    call master_normals(master, x, nodal_normal)
     call build_bins(bins, x, master%seg, nen, reach)
     call tributary_lengths(slave, x, trib)
     call cs_start(cs, slave%nnode)
@@ -80,8 +95,26 @@ contains
         end if
       end do
       if (best == 0) cycle
-      ! Gap along the master's outward normal (tangent turned clockwise).
-      n_m = -rotate_ccw(best_t)
+      ! Foot and normal from the continuous normal field of the closest
+      ! segment; past its end, the neighbour's field takes over.
+      k = best
+      call field_foot(k, best_s, n_m)
+      if (abs(best_s) >= 1.0_wp) then
+        k2 = k + merge(1, -1, best_s > 0.0_wp)
+        if (master%closed) k2 = modulo(k2 - 1, master%nseg) + 1
+        if (k2 >= 1 .and. k2 <= master%nseg) then
+          s = best_s
+          call field_foot(k2, s, tang)
+          if (abs(s) < 1.0_wp) then
+            k = k2
+            best_s = s
+            n_m = tang
+          end if
+        end if
+      end if
+      ! At an end of the master chain (the orthogonal test let it in), clip.
+      best_s = max(-1.0_wp, min(1.0_wp, best_s))
+      best = k
       call load_segment(master, xpred, best, xs)
       call segment_point(nen, xs, best_s, foot, tang)
       g = dot_product(xpred(:, p) - foot, n_m)
@@ -94,7 +127,56 @@ contains
       end do
       call cs_finish_row(cs, xpred, du)
     end do
+  contains
+    !> Parameter s on master segment kk whose interpolated normal passes
+    !> through the slave node (t(n) geometry), and the unit normal there.
+    !> |s| = 1 returned with no root means the node is beyond that end.
+    subroutine field_foot(kk, s_out, normal)
+      integer, intent(in) :: kk
+      real(wp), intent(out) :: s_out, normal(2)
+      real(wp) :: xk(2, 3), fx(2), ft(2)
+      integer :: aa
+      call load_segment(master, x, kk, xk)
+      nn = 0.0_wp
+      do aa = 1, nen
+        nn(:, aa) = nodal_normal(:, master%seg(aa, kk))
+      end do
+      s_out = project_along_field(nen, xk, nn, xp)
+      call normal_field(nen, nn, s_out, normal, dnf)
+      normal = normal/max(norm2(normal), tiny(1.0_wp))
+      ! A clipped end is a root only if the field there points at the node.
+      if (abs(s_out) >= 1.0_wp) then
+        call segment_point(nen, xk, s_out, fx, ft)
+        if (abs(cross2(xp - fx, normal)) > 1.0e-9_wp*max(norm2(xp - fx), norm2(ft))) &
+          s_out = sign(1.0_wp + 1.0e-6_wp, s_out)
+      end if
+    end subroutine field_foot
   end subroutine build_node_to_segment
+
+  !> Outward unit normal of the master at each of its nodes: the mean of
+  !> the normals of the segments meeting there (of its segment for a mid node).
+  subroutine master_normals(master, x, nodal_normal)
+    type(contact_surface_t), intent(in) :: master
+    real(wp), intent(in) :: x(:,:)
+    real(wp), intent(inout) :: nodal_normal(:,:)
+    real(wp) :: xs(2, 3)
+    integer :: k, a, q
+    do q = 1, master%nnode
+      nodal_normal(:, master%node(q)) = 0.0_wp
+    end do
+    do k = 1, master%nseg
+      call load_segment(master, x, k, xs)
+      do a = 1, master%nen_seg
+        nodal_normal(:, master%seg(a, k)) = nodal_normal(:, master%seg(a, k)) + &
+          outward_normal(master%nen_seg, xs, NODE_XI(a))
+      end do
+    end do
+    do q = 1, master%nnode
+      associate (v => nodal_normal(:, master%node(q)))
+        v = v/max(norm2(v), tiny(1.0_wp))
+      end associate
+    end do
+  end subroutine master_normals
 
   subroutine load_segment(surf, x, k, xs)
     type(contact_surface_t), intent(in) :: surf

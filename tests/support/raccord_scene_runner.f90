@@ -26,6 +26,8 @@ module raccord_scene_runner
     type(time_plan_t) :: plan
     type(state_t) :: state
     real(wp) :: worst_balance = 0.0_wp     !< largest |energy balance| / scale over the run
+    real(wp) :: max_internal = 0.0_wp      !< largest internal energy over the run
+    real(wp) :: min_contact_work = 0.0_wp  !< lowest contact work over the run (< 0: contact gave energy)
   end type scene_run_t
 
   public :: run_deck
@@ -66,6 +68,8 @@ contains
         if (err%failed()) return
         call update_energy(model, state)
         run%worst_balance = max(run%worst_balance, abs(state%energy%balance)/max(state%energy%scale, tiny(1.0_wp)))
+        run%max_internal = max(run%max_internal, state%energy%internal)
+        run%min_contact_work = min(run%min_contact_work, state%energy%contact)
         if (state%step == state%nsteps) exit
         if (present(t_stop)) then
           if (state%time >= t_stop - 0.5_wp*state%dt) exit
