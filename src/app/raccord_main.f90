@@ -14,7 +14,7 @@ program raccord_main
   use raccord_error, only: error_t, raise_error, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, &
     EXIT_WALLCLOCK
   use raccord_log, only: log_open, log_close, log_info, log_error, log_raw, log_set_quiet, log_set_level, &
-    LEVEL_DEBUG
+    LEVEL_DEBUG, log_unit
   use raccord_strings, only: str
   use raccord_version, only: raccord_version_string
   use raccord_cli, only: cli_t, parse_command_line, usage_text
@@ -125,6 +125,8 @@ contains
       call finish(err)
     end if
     call log_info('raccord', 'raccord ' // raccord_version_string // ', scene ' // scene%path)
+    ! The resolved scene, every key with its final value, in the run log.
+    call write_scene(scene, log_unit())
   end subroutine open_run_folder
 
   !> NaN/Inf guard: the energies sum over every node, so a non-finite value

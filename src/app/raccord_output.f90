@@ -19,6 +19,7 @@ module raccord_output
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file
+  use raccord_deck, only: write_scene
   implicit none
   private
 
@@ -96,7 +97,7 @@ contains
       call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
       if (err%failed()) return
     end do
-    call results_set_text(out%res, 'scene', scene%path, err)
+    call keep_resolved_scene(scene, stem, out%res, err)
     if (err%failed()) return
     call history_open(out%hist, stem // '.history.txt', out%columns, err)
     if (err%failed()) return
@@ -105,6 +106,38 @@ contains
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
   end subroutine open_outputs
+
+  !> The resolved scene (every key with its final value) beside the
+  !> results as <stem>.scene.nml, and as text in the HDF5 file (/scene, with
+  !> /scene_path the deck it came from), so a result file carries its inputs.
+  subroutine keep_resolved_scene(scene, stem, res, err)
+    type(scene_t), intent(in) :: scene
+    character(len=*), intent(in) :: stem
+    type(results_t), intent(inout) :: res
+    type(error_t), intent(inout) :: err
+    integer :: unit, ios
+    character(len=1024) :: line
+    character(len=256) :: msg
+    character(len=:), allocatable :: text
+    open(newunit=unit, file=stem // '.scene.nml', status='replace', action='readwrite', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot write ' // stem // '.scene.nml: ' // trim(msg))
+      return
+    end if
+    call write_scene(scene, unit, err)
+    if (err%failed()) return
+    rewind(unit)
+    text = ''
+    do
+      read(unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      text = text // trim(line) // new_line('a')
+    end do
+    close(unit)
+    call results_set_text(res, 'scene', text, err)
+    if (err%failed()) return
+    call results_set_text(res, 'scene_path', scene%path, err)
+  end subroutine keep_resolved_scene
 
   !> Column names of the history: energies, then reaction and mean
   !> displacement per support, then total applied force per surface load.
