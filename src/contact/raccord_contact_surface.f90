@@ -41,7 +41,8 @@ contains
     is = find_surface(mesh, name)
     if (is == 0) then
       call raise_error(err, EXIT_INPUT, where // ': surface ''' // trim(name) // ''' not found in mesh ' // &
-        mesh%source // '; a contact surface is a Gmsh physical curve or an Abaqus *SURFACE.')
+        mesh%source // '; surfaces there: ' // surface_list(mesh) // &
+        '. A contact surface is a Gmsh physical curve or an Abaqus *SURFACE.')
       return
     end if
     associate (ms => mesh%surfaces(is))
@@ -166,4 +167,19 @@ contains
     surf%node = surf%node(1:cnt)
     surf%s0 = surf%s0(1:cnt)
   end subroutine build_contact_surface
+
+  !> Names of the mesh's surfaces, comma-separated.
+  function surface_list(mesh) result(names)
+    type(mesh_t), intent(in) :: mesh
+    character(len=:), allocatable :: names
+    integer :: k
+    names = ''
+    if (allocated(mesh%surfaces)) then
+      do k = 1, size(mesh%surfaces)
+        if (k > 1) names = names // ', '
+        names = names // mesh%surfaces(k)%name
+      end do
+    end if
+    if (len(names) == 0) names = '(none)'
+  end function surface_list
 end module raccord_contact_surface
