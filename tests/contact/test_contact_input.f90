@@ -66,7 +66,8 @@ contains
     type(scene_t) :: scene
     call setup(mesh, scene)
     call add_pair(scene, 'b_nosuch', 'a_top', METHOD_NTS, 0.0_wp)
-    call expect_refusal(failure, mesh, scene, [character(len=32) :: '&contact_pair #1', 'b_nosuch', 'not found', 'surfaces there: a_bottom, a_right, a_top'])
+    call expect_refusal(failure, mesh, scene, [character(len=48) :: '&contact_pair #1', 'b_nosuch', 'not found', &
+      'surfaces there: a_bottom, a_right, a_top'])
   end subroutine test_unknown
 
   !> The horizontal line y = 0.25 through block a: every edge is shared by
