@@ -1,0 +1,186 @@
+#!/bin/sh
+# The numbers behind doc/reproduction.md, from the runs of tools/paper-figures.sh.
+#
+#   sh postproc/paper/numbers.sh RUNS [CCX_FILE] > numbers.txt
+#
+# RUNS holds <deck>/<deck>.contact1.txt and .history.txt. Every profile
+# figure is taken at result frame 20 (t = T, maximum indentation). Normal
+# stress: lambda_n (column 9) for mortar, 'pressure' (column 5) for
+# node-to-segment and in the cross-method table; compressive positive.
+# Differences between two profiles on different nodes: the second is
+# interpolated linearly in the deformed x at the nodes of the first, both
+# ways, and the largest |difference| is divided by the larger peak. 'inner'
+# restricts the nodes to |x| < 0.8 of the contact half-width (away from the
+# contact edges, where one node spacing of edge position is a difference of
+# order the peak by itself). POSIX sh + awk + sort only.
+set -eu
+runs=$1
+ccx=${2:-}
+frame=20
+
+prof() { echo "$runs/$1/$1.contact1.txt"; }
+hist() { echo "$runs/$1/$1.history.txt"; }
+
+# block NAME: the lines of frame $frame, sorted by deformed x
+block() {
+  f=$(prof "$1")
+  [ -f "$f" ] || { echo "numbers: missing $f" >&2; exit 1; }
+  awk -v fr="$frame" '/^# frame/ { f = $3; next } /^#/ { next } f == fr && NF >= 10' "$f" | sort -g -k2,2
+}
+# time of frame $frame
+frame_time() { awk -v fr="$frame" '/^# frame/ && $3 == fr { print $5; exit }' "$(prof "$1")"; }
+
+# stats NAME COL [MU]: peak, contact width and force of column COL; Coulomb with MU > 0
+stats() {
+  block "$1" | awk -v c="$2" -v mu="${3:-0}" -v name="$1" '
+    { n++; x[n] = $2; v[n] = $c; st[n] = $7; tn[n] = $9; tt[n] = $10; ps[n] = $5; sh[n] = $6 }
+    END {
+      pk = 0; xl = 1e30; xr = -1e30; na = 0; F = 0
+      for (i = 1; i <= n; i++) {
+        if (v[i] > pk) { pk = v[i]; xp = x[i] }
+        if (st[i] > 0) { na++; if (x[i] < xl) xl = x[i]; if (x[i] > xr) xr = x[i] }
+        if (i > 1) F += 0.5 * (v[i] + v[i-1]) * (x[i] - x[i-1])
+      }
+      printf "%-34s peak %8.1f MPa at x = %+.4f  active %3d nodes, x in [%+.4f, %+.4f], width %.4f mm  integral %7.1f N/mm\n", \
+        name, pk, xp, na, xl, xr, xr - xl, F
+      if (mu > 0) {
+        r1 = 0; r2 = 0; nst = 0; nsl = 0; xst = 0; xsl = 1e30; xslmax = 0; bad = 0
+        for (i = 1; i <= n; i++) {
+          if (st[i] == 0) continue
+          a = (x[i] < 0 ? -x[i] : x[i])
+          if (tn[i] > 0) { q = (tt[i] < 0 ? -tt[i] : tt[i]) / (mu * tn[i]); if (q > r1) r1 = q }
+          if (ps[i] > 0) { q = (sh[i] < 0 ? -sh[i] : sh[i]) / (mu * ps[i]); if (q > r2) r2 = q }
+          if (st[i] == 1) { nst++; if (a > xst) xst = a }
+          if (st[i] == 2) { nsl++; if (a < xsl) xsl = a; if (a > xslmax) xslmax = a }
+        }
+        for (i = 1; i <= n; i++) if (st[i] == 2) { a = (x[i] < 0 ? -x[i] : x[i]); if (a < xst) bad++ }
+        printf "%-34s mu = %.1f: max |lambda_t|/(mu lambda_n) = %.4f, max |shear|/(mu pressure) = %.4f; stick %d nodes (|x| <= %.4f), slip %d nodes (%.4f <= |x| <= %.4f), slip nodes inside the stick zone: %d\n", \
+          "", mu, r1, r2, nst, xst, nsl, (nsl ? xsl : 0), xslmax, bad
+      }
+    }'
+}
+
+# diff NAME1 COL1 NAME2 COL2 LABEL: max |v1 - v2| / max peak, all nodes and inner nodes
+diff2() {
+  { block "$1" | awk -v c="$2" '{ print "A", $2, $c, $7 }'; block "$3" | awk -v c="$4" '{ print "B", $2, $c, $7 }'; } |
+  awk -v label="$5" '
+    $1 == "A" { na++; xa[na] = $2; va[na] = $3; if (($3 < 0 ? -$3 : $3) > pa) pa = ($3 < 0 ? -$3 : $3); if ($4 > 0) { if ($2 < l) l = $2; if ($2 > r) r = $2 } }
+    $1 == "B" { nb++; xb[nb] = $2; vb[nb] = $3; if (($3 < 0 ? -$3 : $3) > pb) pb = ($3 < 0 ? -$3 : $3) }
+    BEGIN { l = 1e30; r = -1e30 }
+    function interp(xx, n, xs, vs,   k) {
+      if (xx < xs[1] || xx > xs[n]) return "none"
+      for (k = 1; k < n; k++) if (xx <= xs[k+1]) break
+      if (xs[k+1] == xs[k]) return vs[k]
+      return vs[k] + (vs[k+1] - vs[k]) * (xx - xs[k]) / (xs[k+1] - xs[k])
+    }
+    END {
+      p = (pa > pb ? pa : pb); half = (r - l) / 2; c = (r + l) / 2
+      m = 0; mi = 0; s = 0; ns = 0
+      for (i = 1; i <= na; i++) { w = interp(xa[i], nb, xb, vb); if (w == "none") continue
+        d = va[i] - w; if (d < 0) d = -d; if (d > m) { m = d; xm = xa[i] }
+        if ((xa[i] - c < 0 ? c - xa[i] : xa[i] - c) < 0.8 * half) { if (d > mi) mi = d; s += d * d; ns++ } }
+      for (i = 1; i <= nb; i++) { w = interp(xb[i], na, xa, va); if (w == "none") continue
+        d = vb[i] - w; if (d < 0) d = -d; if (d > m) { m = d; xm = xb[i] }
+        if ((xb[i] - c < 0 ? c - xb[i] : xb[i] - c) < 0.8 * half) { if (d > mi) mi = d; s += d * d; ns++ } }
+      printf "%-52s peaks |max| %7.1f / %7.1f MPa (%+.2f %%)  max|d|/p_max %.4f (at x = %+.3f)  inner: max %.4f, rms %.4f\n", \
+        label, pa, pb, (pa ? 100 * (pb - pa) / pa : 0), m / p, xm, mi / p, (ns ? sqrt(s / ns) / p : 0)
+    }'
+}
+
+# hist_at NAME: energies and forces at the history row nearest to t = T
+hist_at() {
+  T=$(frame_time "$1")
+  awk -v T="$T" -v name="$1" '
+    $1 == "#" && $2 ~ /^[0-9]+$/ { c[$3] = $2; next }
+    /^#/ { next }
+    { d = $1 - T; if (d < 0) d = -d; if (!seen || d < best) { best = d; seen = 1; for (k = 1; k <= NF; k++) row[k] = $k } }
+    END {
+      printf "%-34s t = %.4e: KE/IE = %.2e  contact1_N = %7.1f  -disc_top_Ry = %7.1f  block_bottom_Ry = %7.1f N/mm  (uy = %.5f)\n", \
+        name, row[c["time"]], row[c["kinetic"]] / row[c["internal"]], row[c["contact1_N"]], -row[c["disc_top_Ry"]], \
+        row[c["block_bottom_Ry"]], row[c["disc_top_uy"]]
+    }' "$(hist "$1")"
+}
+
+# max_ke_ie NAME: largest KE/IE over the loading half with IE above 1 % of its peak
+ke_ie_max() {
+  T=$(frame_time "$1")
+  awk -v T="$T" -v name="$1" '
+    $1 == "#" && $2 ~ /^[0-9]+$/ { c[$3] = $2; next } /^#/ { next }
+    { n++; t[n] = $c["time"]; ke[n] = $c["kinetic"]; ie[n] = $c["internal"]; if (ie[n] > iem) iem = ie[n] }
+    END { for (i = 1; i <= n; i++) if (t[i] <= T && ie[i] > 0.01 * iem) { q = ke[i] / ie[i]; if (q > m) { m = q; tm = t[i] } }
+          printf "%-34s max KE/IE over t <= T where IE > 1 %% of its peak: %.2e at t = %.3e\n", name, m, tm }' "$(hist "$1")"
+}
+
+# force_diff NAME1 NAME2: -disc_top_Ry of the two at their frame-20 rows
+force_diff() {
+  a=$(hist_at "$1" | sed 's/.*-disc_top_Ry = *\([-0-9.]*\).*/\1/')
+  b=$(hist_at "$2" | sed 's/.*-disc_top_Ry = *\([-0-9.]*\).*/\1/')
+  awk -v a="$a" -v b="$b" -v l="$1 / $2" 'BEGIN { printf "%-52s -disc_top_Ry at t = T: %.1f / %.1f N/mm (%+.2f %%)\n", l, a, b, 100 * (b - a) / a }'
+}
+
+echo "# raccord: numbers of doc/reproduction.md (postproc/paper/numbers.sh), frame $frame (t = T)"
+echo
+echo "## 1. Peak, contact width (x extent of the active slave nodes), integral of the stress over x"
+echo "## normal stress: pressure (col 5) for node-to-segment, lambda_n (col 9) for mortar"
+stats fig1b_nts_slave_block 5
+stats fig1b_nts_slave_disc 5
+for n in fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block fig2b_mortar_p0_slave_disc \
+         fig4a_q4_mortar_p1 fig4a_q8_mortar_p1; do
+  stats $n 9
+done
+echo
+echo "## 2. Slave/master asymmetry: slave = block against slave = disc, max |dp| / p_max"
+diff2 fig1b_nts_slave_block 5 fig1b_nts_slave_disc 5 "node-to-segment, pressure"
+diff2 fig2a_mortar_p1_slave_block 9 fig2a_mortar_p1_slave_disc 9 "mortar P1, lambda_n"
+diff2 fig2a_mortar_p1_slave_block 5 fig2a_mortar_p1_slave_disc 5 "mortar P1, pressure"
+diff2 fig2b_mortar_p0_slave_block 9 fig2b_mortar_p0_slave_disc 9 "mortar P0, lambda_n"
+echo
+echo "## 3. P0 against P1 (same slave, same nodes), max |dlambda_n| / p_max"
+diff2 fig2a_mortar_p1_slave_block 9 fig2b_mortar_p0_slave_block 9 "mu = 0, slave = block"
+diff2 fig2a_mortar_p1_slave_disc 9 fig2b_mortar_p0_slave_disc 9 "mu = 0, slave = disc"
+for mu in 010 020 050; do
+  diff2 fig3_mortar_p1_mu$mu 9 fig3_mortar_p0_mu$mu 9 "mu = $mu (/100), normal"
+  diff2 fig3_mortar_p1_mu$mu 10 fig3_mortar_p0_mu$mu 10 "mu = $mu (/100), tangential lambda_t"
+done
+diff2 fig4b_q8_mortar_p1_mu020 9 fig4b_q8_mortar_p0_mu020 9 "Q8, mu = 0.2, normal"
+echo
+echo "## 4. Q1 against Q2 (paper_q4 / paper_q8, mortar P1), max |dlambda_n| / p_max"
+diff2 fig4a_q4_mortar_p1 9 fig4a_q8_mortar_p1 9 "Q4 / Q8, lambda_n"
+echo
+echo "## 5. Friction: Coulomb cone and stick/slip zones (status column: 1 stick, 2 slip)"
+for mu in 010 020 050; do
+  m=$(awk -v m=$mu 'BEGIN { print m / 100 }')
+  stats fig3_mortar_p1_mu$mu 9 $m
+  stats fig3_mortar_p0_mu$mu 9 $m
+done
+stats fig4b_q8_mortar_p1_mu020 9 0.2
+stats fig4b_q8_mortar_p0_mu020 9 0.2
+echo
+echo "## 6. Method against method (pressure, col 5; slave = block)"
+diff2 fig2a_mortar_p1_slave_block 5 fig1b_nts_slave_block 5 "mortar P1 / node-to-segment"
+diff2 fig2a_mortar_p1_slave_block 9 fig3_mortar_p1_mu020 9 "mu = 0 / mu = 0.2 (P1, lambda_n)"
+if [ -n "$ccx" ] && [ -s "$ccx" ]; then
+  echo
+  echo "## 7. CalculiX (node-to-surface, slave = block, $(basename "$ccx")) against raccord node-to-segment, slave = block"
+  awk 'BEGIN { pk = 0 } !/^#/ && NF >= 2 { n++; if ($2 > pk) { pk = $2; xp = $1 } if ($2 > 0) { if (!l || $1 < xl) { xl = $1; l = 1 } if (!r || $1 > xr) { xr = $1; r = 1 } } }
+       END { printf "%-34s peak %8.1f MPa at x = %+.4f  x in [%+.4f, %+.4f], width %.4f mm\n", "calculix", pk, xp, xl, xr, xr - xl }' "$ccx"
+  mkdir -p "$runs/ccx" && awk '!/^#/ && NF >= 2 { printf "0 %s 0 0 %s 0 %d 0 %s 0\n", $1, $2, ($2 > 0), $2 }' "$ccx" > "$runs/ccx/ccx.contact1.txt.tmp"
+  { echo "# frame $frame  time 0"; cat "$runs/ccx/ccx.contact1.txt.tmp"; } > "$runs/ccx/ccx.contact1.txt"; rm -f "$runs/ccx/ccx.contact1.txt.tmp"
+  diff2 fig1b_nts_slave_block 5 ccx 5 "raccord NTS slave = block / CalculiX"
+  diff2 fig1b_nts_slave_disc 5 ccx 5 "raccord NTS slave = disc / CalculiX"
+  diff2 fig2a_mortar_p1_slave_block 9 ccx 5 "raccord mortar P1 slave = block / CalculiX"
+fi
+echo
+echo "## 8. Quasi-static evidence: energies and forces at t = T; T doubled (slow_*)"
+for n in fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc \
+         fig2b_mortar_p0_slave_block fig3_mortar_p1_mu020 fig4a_q8_mortar_p1 \
+         slow_fig2a_mortar_p1_slave_block slow_fig3_mortar_p1_mu020; do
+  hist_at $n
+done
+ke_ie_max fig2a_mortar_p1_slave_block
+ke_ie_max slow_fig2a_mortar_p1_slave_block
+diff2 fig2a_mortar_p1_slave_block 9 slow_fig2a_mortar_p1_slave_block 9 "T / 2T, mortar P1 mu = 0, lambda_n"
+diff2 fig3_mortar_p1_mu020 9 slow_fig3_mortar_p1_mu020 9 "T / 2T, mortar P1 mu = 0.2, lambda_n"
+diff2 fig3_mortar_p1_mu020 10 slow_fig3_mortar_p1_mu020 10 "T / 2T, mortar P1 mu = 0.2, lambda_t"
+force_diff fig2a_mortar_p1_slave_block slow_fig2a_mortar_p1_slave_block
+force_diff fig3_mortar_p1_mu020 slow_fig3_mortar_p1_mu020
