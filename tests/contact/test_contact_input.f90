@@ -10,8 +10,8 @@ program test_contact_input
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs
-  use raccord_test_meshes, only: rect_mesh, join_meshes
-  use dynamics_support, only: one_body_scene, add_body, add_pair
+  use raccord_test_meshes, only: rect_mesh
+  use dynamics_support, only: add_pair, two_body_scene
   implicit none
 
   call run_tests('contact_input', [ &
@@ -30,11 +30,7 @@ contains
     type(mesh_t) :: ma, mb
     call rect_mesh(ma, ELEM_Q4, 4, 2, 1.0_wp, 0.5_wp)
     call rect_mesh(mb, ELEM_Q4, 3, 2, 1.0_wp, 0.5_wp, y0=0.5_wp)
-    call join_meshes(ma, 'a', mb, 'b', mesh)
-    call one_body_scene(scene, 1000.0_wp, 0.3_wp, 1.0e-6_wp, .false., 1.0_wp)
-    scene%bodies(1)%name = 'a'
-    scene%bodies(1)%elset = 'a_body'
-    call add_body(scene, 'b', 'b_body', 1000.0_wp, 0.3_wp, 1.0e-6_wp, .false.)
+    call two_body_scene(ma, mb, mesh, scene, 1000.0_wp, 0.3_wp, 1.0e-6_wp, .false., 1.0_wp)
   end subroutine setup
 
   !> init_contact_pairs must fail with EXIT_INPUT and a message holding every fragment.

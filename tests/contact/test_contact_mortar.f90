@@ -23,7 +23,8 @@ program test_contact_mortar
   use raccord_mortar, only: mortar_work_t, init_mortar, build_mortar
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_test_meshes, only: rect_mesh, join_meshes
-  use dynamics_support, only: one_body_scene, add_bc, add_body, add_pair, contact_step
+  use dynamics_support, only: one_body_scene, add_bc, add_body, add_pair, contact_step, &
+    two_body_scene, prepare_contact
   implicit none
 
   call run_tests('contact_mortar', [ &
@@ -328,20 +329,7 @@ contains
 
   ! ------------------------------------------------------------- dynamics
 
-  !> Scene of two bodies 'a' and 'b' from meshes ma (below/left) and mb.
-  subroutine two_bodies(ma, mb, mesh, scene, young, nu, rho, plane_stress, t_end)
-    type(mesh_t), intent(in) :: ma, mb
-    type(mesh_t), intent(out) :: mesh
-    type(scene_t), intent(out) :: scene
-    real(wp), intent(in) :: young, nu, rho, t_end
-    logical, intent(in) :: plane_stress
-    call join_meshes(ma, 'a', mb, 'b', mesh)
-    call one_body_scene(scene, young, nu, rho, plane_stress, t_end)
-    scene%bodies(1)%name = 'a'
-    scene%bodies(1)%elset = 'a_body'
-    call add_body(scene, 'b', 'b_body', young, nu, rho, plane_stress)
-  end subroutine two_bodies
-
+  !> Set up an in-memory contact run; a failure names the setup error.
   subroutine prepare(scene, mesh, model, pairs, plan, state, failure)
     type(scene_t), intent(inout) :: scene
     type(mesh_t), intent(in) :: mesh
@@ -351,14 +339,8 @@ contains
     type(state_t), intent(out) :: state
     type(failure_t), allocatable, intent(inout) :: failure
     type(error_t) :: err
-    call build_model(scene, mesh, model, err)
-    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
-    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
-    if (err%failed()) then
-      call check(failure, .false., 'setup failed: ' // err%message)
-      return
-    end if
-    call init_state(model, plan%dt, plan%nsteps, state)
+    call prepare_contact(scene, mesh, model, pairs, plan, state, err)
+    if (err%failed()) call check(failure, .false., 'setup failed: ' // err%message)
   end subroutine prepare
 
   !> Grade a rect_mesh on [0, 1] in x by g(s) = s + c s (1 - s), keeping
@@ -414,7 +396,7 @@ contains
     call grade_x(mb, step*nb, step, 0.3_wp)
     omega1 = 0.5_wp*3.14159265_wp*sqrt(e/rho)/1.0_wp
     t_end = 400.0_wp/omega1
-    call two_bodies(ma, mb, mesh, scene, e, nu, rho, .false., t_end)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., t_end)
     scene%time%damping = 2.0_wp*omega1
     call add_bc(scene, 'a_bottom', BC_FIXED, comp=[.false., .true.])
     call add_bc(scene, 'a_left', BC_FIXED, comp=[.true., .false.])
@@ -523,7 +505,7 @@ contains
     call rect_mesh(ma, ELEM_Q4, 31, 4, 1.0_wp, 0.5_wp)
     call rect_mesh(mb, ELEM_Q4, 12, 4, 1.0_wp, 0.5_wp, y0=0.5_wp)
     omega1 = 0.5_wp*3.14159265_wp*sqrt(e/rho)
-    call two_bodies(ma, mb, mesh, scene, e, nu, rho, .false., 400.0_wp/omega1)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., 400.0_wp/omega1)
     ! Surface 'b_load': the edges of b's top over x in [1/3, 2/3].
     is = find_surface(mesh, 'b_top')
     associate (top => mesh%surfaces(is))
@@ -620,7 +602,7 @@ contains
     v = 0.01_wp*c
     call rect_mesh(ma, ELEM_Q4, 40, nya, lx, 1.0_wp)
     call rect_mesh(mb, ELEM_Q4, 40, nyb, lx, 1.0_wp, x0=lx + gap0)
-    call two_bodies(ma, mb, mesh, scene, e, 0.0_wp, rho, .true., 0.0_wp)
+    call two_body_scene(ma, mb, mesh, scene, e, 0.0_wp, rho, .true., 0.0_wp)
     scene%bodies(1)%velocity = [v, 0.0_wp]
     scene%bodies(2)%velocity = [-v, 0.0_wp]
     t0 = gap0/(2.0_wp*v)
@@ -705,7 +687,7 @@ contains
     call rect_mesh(ma, ELEM_Q8, 12, 2, 1.0_wp, 0.5_wp)
     call rect_mesh(mb, ELEM_Q8, 5, 1, 1.0_wp, 0.1_wp, y0=0.5_wp)
     omega1 = 0.5_wp*3.14159265_wp*sqrt(e/rho)
-    call two_bodies(ma, mb, mesh, scene, e, nu, rho, .false., 100.0_wp/omega1)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., 100.0_wp/omega1)
     scene%bodies(2)%young = 20.0_wp*e
     is = find_surface(mesh, 'b_top')
     associate (top => mesh%surfaces(is))

@@ -16,7 +16,8 @@ program test_contact_nts
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs
   use raccord_multiplier_solver, only: ST_OPEN, ST_SLIP
   use raccord_test_meshes, only: rect_mesh, join_meshes
-  use dynamics_support, only: one_body_scene, add_bc, add_amplitude, add_body, add_pair, contact_step
+  use dynamics_support, only: one_body_scene, add_bc, add_amplitude, add_body, add_pair, contact_step, &
+    two_body_scene, prepare_contact
   implicit none
 
   call run_tests('contact_nts', [ &
@@ -30,20 +31,7 @@ program test_contact_nts
 
 contains
 
-  !> Scene of two bodies 'a' and 'b' from meshes ma (below/left) and mb.
-  subroutine two_bodies(ma, mb, mesh, scene, young, nu, rho, plane_stress, t_end)
-    type(mesh_t), intent(in) :: ma, mb
-    type(mesh_t), intent(out) :: mesh
-    type(scene_t), intent(out) :: scene
-    real(wp), intent(in) :: young, nu, rho, t_end
-    logical, intent(in) :: plane_stress
-    call join_meshes(ma, 'a', mb, 'b', mesh)
-    call one_body_scene(scene, young, nu, rho, plane_stress, t_end)
-    scene%bodies(1)%name = 'a'
-    scene%bodies(1)%elset = 'a_body'
-    call add_body(scene, 'b', 'b_body', young, nu, rho, plane_stress)
-  end subroutine two_bodies
-
+  !> Set up an in-memory contact run; a failure names the setup error.
   subroutine prepare(scene, mesh, model, pairs, plan, state, failure)
     type(scene_t), intent(inout) :: scene
     type(mesh_t), intent(in) :: mesh
@@ -53,14 +41,8 @@ contains
     type(state_t), intent(out) :: state
     type(failure_t), allocatable, intent(inout) :: failure
     type(error_t) :: err
-    call build_model(scene, mesh, model, err)
-    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
-    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
-    if (err%failed()) then
-      call check(failure, .false., 'setup failed: ' // err%message)
-      return
-    end if
-    call init_state(model, plan%dt, plan%nsteps, state)
+    call prepare_contact(scene, mesh, model, pairs, plan, state, err)
+    if (err%failed()) call check(failure, .false., 'setup failed: ' // err%message)
   end subroutine prepare
 
   !> Two identical bars (nu = 0) approach at +v and -v. 1D waves: contact
@@ -86,7 +68,7 @@ contains
     v = 0.01_wp*c
     call rect_mesh(ma, ELEM_Q4, 40, 1, lx, 1.0_wp)
     call rect_mesh(mb, ELEM_Q4, 40, 1, lx, 1.0_wp, x0=lx + gap0)
-    call two_bodies(ma, mb, mesh, scene, e, 0.0_wp, rho, .true., 0.0_wp)
+    call two_body_scene(ma, mb, mesh, scene, e, 0.0_wp, rho, .true., 0.0_wp)
     scene%bodies(1)%velocity = [v, 0.0_wp]
     scene%bodies(2)%velocity = [-v, 0.0_wp]
     t0 = gap0/(2.0_wp*v)
@@ -158,7 +140,7 @@ contains
     ! Lowest mode ~ a quarter wave through the 1.0 high stack.
     omega1 = 0.5_wp*3.14159265_wp*sqrt(e/rho)/1.0_wp
     t_end = 400.0_wp/omega1
-    call two_bodies(ma, mb, mesh, scene, e, nu, rho, .false., t_end)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., t_end)
     scene%time%damping = 2.0_wp*omega1
     call add_bc(scene, 'a_bottom', BC_FIXED, comp=[.false., .true.])
     call add_bc(scene, 'a_left', BC_FIXED, comp=[.true., .false.])
@@ -242,7 +224,7 @@ contains
     t_end = 3.0_wp*t1
     q_max = 2.0_wp*mu*p*wb/hb
     if (mu == 0.0_wp) q_max = 0.2_wp*p*wb/hb
-    call two_bodies(ma, mb, mesh, scene, e, nu, rho, .false., t_end)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., t_end)
     scene%time%damping = 2.0_wp*omega1
     call add_amplitude(scene, 'press', [0.0_wp, t1], [0.0_wp, 1.0_wp])
     ! Pull: zero until t1, then up to q_max at t_end (crosses mu N at t2).
@@ -331,7 +313,7 @@ contains
     call rect_mesh(mb, ELEM_Q4, 5, 2, 1.0_wp, 0.5_wp, y0=0.5_wp)
     omega1 = 0.5_wp*3.14159265_wp*sqrt(e/rho)
     t1 = 40.0_wp/omega1
-    call two_bodies(ma, mb, mesh, scene, e, nu, rho, .false., 3.0_wp*t1)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., 3.0_wp*t1)
     scene%time%damping = 2.0_wp*omega1
     call add_amplitude(scene, 'cycle', [0.0_wp, t1, 2.0_wp*t1, 3.0_wp*t1], [0.0_wp, 1.0_wp, -0.5_wp, -0.5_wp])
     call add_bc(scene, 'a_bottom', BC_FIXED, comp=[.true., .true.])

@@ -7,12 +7,17 @@ module dynamics_support
   use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
-  use raccord_contact_pair, only: contact_pair_t, enforce_contact
+  use raccord_contact_pair, only: contact_pair_t, enforce_contact, init_contact_pairs
+  use raccord_mesh, only: mesh_t
+  use raccord_model_build, only: build_model
+  use raccord_time_step, only: time_plan_t, choose_time_step
+  use raccord_state, only: init_state
+  use raccord_test_meshes, only: join_meshes
   implicit none
   private
 
   public :: one_body_scene, add_bc, add_amplitude, add_body, add_pair, start_march, march_to, march_steps
-  public :: contact_step
+  public :: contact_step, two_body_scene, prepare_contact
 
 contains
 
@@ -108,6 +113,36 @@ contains
     call predict_motion(model, state)
     call update_energy(model, state)
   end subroutine one_step
+
+  !> Scene of two bodies 'a' and 'b' (element sets 'a_body', 'b_body') from
+  !> meshes ma and mb joined (their sets prefixed 'a_' and 'b_').
+  subroutine two_body_scene(ma, mb, mesh, scene, young, nu, rho, plane_stress, t_end)
+    type(mesh_t), intent(in) :: ma, mb
+    type(mesh_t), intent(out) :: mesh
+    type(scene_t), intent(out) :: scene
+    real(wp), intent(in) :: young, nu, rho, t_end
+    logical, intent(in) :: plane_stress
+    call join_meshes(ma, 'a', mb, 'b', mesh)
+    call one_body_scene(scene, young, nu, rho, plane_stress, t_end)
+    scene%bodies(1)%name = 'a'
+    scene%bodies(1)%elset = 'a_body'
+    call add_body(scene, 'b', 'b_body', young, nu, rho, plane_stress)
+  end subroutine two_body_scene
+
+  !> Model, contact pairs, time plan and initial state of an in-memory scene.
+  subroutine prepare_contact(scene, mesh, model, pairs, plan, state, err)
+    type(scene_t), intent(inout) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(out) :: model
+    type(contact_pair_t), allocatable, intent(out) :: pairs(:)
+    type(time_plan_t), intent(out) :: plan
+    type(state_t), intent(out) :: state
+    type(error_t), intent(inout) :: err
+    call build_model(scene, mesh, model, err)
+    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
+    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    if (.not. err%failed()) call init_state(model, plan%dt, plan%nsteps, state)
+  end subroutine prepare_contact
 
   !> One step with contact at t(n), as in the main program (the caller
   !> advances the state to n+1 between calls).
