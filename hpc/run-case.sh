@@ -1,0 +1,111 @@
+#!/bin/sh
+# Runs one case folder of a sweep (made by sweep-gen.sh), or any folder that
+# holds a deck case.nml: skip it if it is complete, else check the deck with
+# `raccord --check`, then run `raccord --output CASEDIR CASEDIR/case.nml`.
+# Used by sweep-local.sh and the Slurm templates; doc/hpc.md.
+#
+#   sh hpc/run-case.sh [-r RACCORD] CASEDIR
+#
+# Prints one line "case NAME: skipped|done|failed ..." and exits with
+# raccord's code (0 also when skipped; 2 when --check refuses the deck).
+# Files in CASEDIR: check.txt (--check output), run.out (stdout and stderr of
+# the run), attempts.txt (one line per attempt: date, host, job, stage, exit),
+# and raccord's own case.h5, case.xmf, case.history.txt, case.log, ...
+#
+# Environment: RACCORD (the executable); RACCORD_WALLCLOCK_SECONDS or what
+# lib.sh's hpc_wallclock_seconds derives from the Slurm job: exported to
+# raccord, and passed as --wall-clock when raccord lists that option.
+# Signals: TERM, INT, HUP stop raccord (TERM) and exit 128+n; USR1 is passed
+# on to raccord when it writes checkpoints (lib.sh, hpc_raccord_has_checkpoint),
+# ignored otherwise (an older raccord would die on it).
+set -u
+hpc_prog=run-case.sh
+hpc_dir=$(cd "$(dirname "$0")" && pwd)
+. "$hpc_dir/lib.sh"
+
+raccord=
+while [ $# -gt 0 ]; do
+  case "$1" in
+  -r | --raccord) [ $# -ge 2 ] || hpc_die "-r needs a value"; raccord=$2; shift 2 ;;
+  -*) hpc_die "unknown option '$1' (usage: run-case.sh [-r RACCORD] CASEDIR)" ;;
+  *) break ;;
+  esac
+done
+[ $# -eq 1 ] || hpc_die "usage: run-case.sh [-r RACCORD] CASEDIR"
+dir=${1%/}
+name=$(basename "$dir")
+deck=$dir/$RACCORD_CASE_STEM.nml
+[ -f "$deck" ] || { echo "case $name: failed: no deck $deck"; exit 2; }
+raccord=$(hpc_find_raccord "$raccord") || { echo "case $name: failed: no raccord executable (set RACCORD)"; exit 1; }
+
+if hpc_case_done "$dir"; then
+  echo "case $name: skipped (complete: $dir/$RACCORD_CASE_STEM.h5)"
+  exit 0
+fi
+
+attempt() { # stage code
+  echo "$(date '+%Y-%m-%dT%H:%M:%S') host=$(uname -n) job=${SLURM_JOB_ID:-none}${SLURM_ARRAY_TASK_ID:+ task=$SLURM_ARRAY_TASK_ID} stage=$1 exit=$2" >> "$dir/attempts.txt"
+}
+
+"$raccord" --check "$deck" > "$dir/check.txt" 2>&1
+code=$?
+if [ "$code" -ne 0 ]; then
+  attempt check "$code"
+  echo "case $name: failed at check (exit $code): $(grep ERROR "$dir/check.txt" | head -n 1 | cut -c 1-300) [$dir/check.txt]"
+  exit "$code"
+fi
+
+set --
+checkpoint=0
+if hpc_raccord_has_checkpoint "$raccord"; then checkpoint=1; fi
+wall=$(hpc_wallclock_seconds)
+if [ -n "$wall" ]; then
+  RACCORD_WALLCLOCK_SECONDS=$wall
+  export RACCORD_WALLCLOCK_SECONDS
+  if [ "$checkpoint" = 1 ]; then set -- --wall-clock "$wall"; fi
+fi
+
+pid=
+got_signal=0
+stop() { # signal number
+  trap '' TERM INT HUP
+  if [ -n "$pid" ]; then kill -TERM "$pid" 2>/dev/null; wait "$pid" 2>/dev/null; fi
+  attempt run "signal-$1"
+  echo "case $name: failed: stopped by signal $1 (raccord killed; its .part files are left, a rerun starts again) [$dir]"
+  exit $((128 + $1))
+}
+usr1() {
+  got_signal=1
+  if [ "$checkpoint" = 1 ] && [ -n "$pid" ]; then
+    echo "case $name: SIGUSR1: asking raccord for a checkpoint"
+    kill -USR1 "$pid" 2>/dev/null
+  else
+    echo "case $name: SIGUSR1 ignored (this raccord writes no checkpoint)"
+  fi
+}
+trap 'stop 15' TERM
+trap 'stop 2' INT
+trap 'stop 1' HUP
+trap usr1 USR1
+
+start=$(hpc_now)
+"$raccord" "$@" --output "$dir" "$deck" > "$dir/run.out" 2>&1 &
+pid=$!
+while :; do
+  got_signal=0
+  wait "$pid"
+  code=$?
+  if [ "$got_signal" = 1 ] && kill -0 "$pid" 2>/dev/null; then continue; fi
+  break
+done
+pid=
+attempt run "$code"
+secs=$(($(hpc_now) - start))
+case "$code" in
+0)
+  if [ -f "$dir/$RACCORD_CASE_STEM.h5" ]; then echo "case $name: done (${secs} s) [$dir]"
+  else echo "case $name: failed: exit 0 but no $RACCORD_CASE_STEM.h5 [$dir]"; exit 4; fi ;;
+5) echo "case $name: stopped at the wall-clock limit, checkpoint written (exit 5, ${secs} s): resubmit to go on [$dir]" ;;
+*) echo "case $name: failed (exit $code, ${secs} s): $(grep ERROR "$dir/run.out" | head -n 1 | cut -c 1-300) [$dir/run.out]" ;;
+esac
+exit "$code"
