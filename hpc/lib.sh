@@ -41,12 +41,16 @@ hpc_find_raccord() {
   printf '%s\n' "$_r"
 }
 
-# hpc_case_done CASEDIR: true when CASEDIR/case.h5 exists (complete by the
-# .part/.incomplete convention of doc/output-format.md) and is newer than
-# CASEDIR/case.nml (a deck rewritten by sweep-gen.sh after the run is run again).
+# hpc_case_done OUTDIR [DECK]: true when OUTDIR/<stem>.h5 exists (complete by
+# the .part/.incomplete convention of doc/output-format.md) and is newer than
+# DECK (default OUTDIR/case.nml; <stem> is DECK's name without extension), so
+# that a deck rewritten by sweep-gen.sh after its run makes the case run again.
 hpc_case_done() {
-  [ -f "$1/$RACCORD_CASE_STEM.h5" ] || return 1
-  [ -n "$(find "$1/$RACCORD_CASE_STEM.h5" -newer "$1/$RACCORD_CASE_STEM.nml" -print 2>/dev/null)" ]
+  _deck=${2:-$1/$RACCORD_CASE_STEM.nml}
+  _stem=$(basename "$_deck")
+  _stem=${_stem%.*}
+  [ -f "$1/$_stem.h5" ] || return 1
+  [ -n "$(find "$1/$_stem.h5" -newer "$_deck" -print 2>/dev/null)" ]
 }
 
 # hpc_now: seconds since the epoch.
@@ -116,3 +120,82 @@ hpc_case_line() {
 hpc_case_count() {
   awk -F '\t' '$1 ~ /^[0-9]+$/ { n++ } END { print n + 0 }' "$1/cases.txt"
 }
+
+# hpc_job_case CASEDIR [DECK]: what a batch job does with one case (the Slurm
+# templates call it; doc/hpc.md, "Exit codes"): run-case.sh, then by its exit
+#   0   done (or already complete)                 -> 0
+#   1   bad command line (a script problem)        -> 1, not requeued
+#   2   deck or mesh refused                       -> 2, not requeued: fix the input
+#   3   numerical failure                          -> 3, not requeued; reported with the log's last errors
+#   4   file system failure                        -> run once more after
+#       RACCORD_RETRY_DELAY seconds (default 60); a second 4 -> 4
+#   5   wall-clock limit, checkpoint written       -> `scontrol requeue $SLURM_JOB_ID`
+#       (at most RACCORD_MAX_REQUEUE times, default 20, counted by
+#       SLURM_RESTART_COUNT); without Slurm, prints how to resubmit -> 5
+#   >128 killed by a signal (time limit without checkpoint, scancel) -> as is
+# It runs run-case.sh in the background so that this shell can pass on the
+# USR1 of `#SBATCH --signal=B:USR1@...` (and TERM) while it waits.
+hpc_job_case() {
+  _dir=$1
+  _deckopt=
+  [ $# -lt 2 ] || _deckopt=$2
+  _try=1
+  while :; do
+    if [ -n "$_deckopt" ]; then
+      sh "$hpc_dir/run-case.sh" -d "$_deckopt" "$_dir" &
+    else
+      sh "$hpc_dir/run-case.sh" "$_dir" &
+    fi
+    _child=$!
+    trap 'hpc_got_signal=1; kill -USR1 "$_child" 2>/dev/null' USR1
+    trap 'hpc_got_signal=1; kill -TERM "$_child" 2>/dev/null' TERM
+    while :; do
+      hpc_got_signal=0
+      wait "$_child"
+      _code=$?
+      if [ "$hpc_got_signal" = 1 ] && kill -0 "$_child" 2>/dev/null; then continue; fi
+      break
+    done
+    trap - USR1 TERM
+    if [ "$_code" -eq 4 ] && [ "$_try" -eq 1 ]; then
+      echo "job: file system failure (exit 4): trying once more in ${RACCORD_RETRY_DELAY:-60} s"
+      sleep "${RACCORD_RETRY_DELAY:-60}"
+      _try=2
+      continue
+    fi
+    break
+  done
+  case "$_code" in
+  0) echo "job: case complete: $_dir" ;;
+  1) echo "job: bad command line (exit 1): a problem of the job script; not requeued" ;;
+  2) echo "job: the deck or mesh was refused (exit 2): fix the input and submit again; not requeued" ;;
+  3)
+    echo "job: numerical failure (exit 3): not requeued; files *.incomplete.* in $_dir; last errors:"
+    grep -h 'ERROR\|incomplete' "$_dir"/*.log "$_dir/run.out" 2>/dev/null | tail -n 5 | sed 's/^/  /'
+    ;;
+  4) echo "job: file system failure (exit 4) twice: not requeued; check quota and the folder $_dir" ;;
+  5)
+    _n=${SLURM_RESTART_COUNT:-0}
+    if [ -n "${SLURM_JOB_ID:-}" ] && command -v scontrol > /dev/null 2>&1; then
+      if [ "$_n" -ge "${RACCORD_MAX_REQUEUE:-20}" ]; then
+        echo "job: checkpoint written (exit 5) but requeued $_n times already (RACCORD_MAX_REQUEUE): not requeued; resubmit by hand"
+      elif scontrol requeue "$SLURM_JOB_ID"; then
+        echo "job: checkpoint written (exit 5): job $SLURM_JOB_ID requeued (restart $((_n + 1)))"
+      else
+        echo "job: checkpoint written (exit 5) but scontrol requeue $SLURM_JOB_ID failed: resubmit by hand"
+      fi
+    else
+      echo "job: checkpoint written (exit 5): not under Slurm; run the same command again to go on"
+    fi
+    ;;
+  *)
+    if [ "$_code" -gt 128 ]; then
+      echo "job: raccord was stopped by signal $((_code - 128)) (time limit without checkpoint, or scancel): not requeued; a new submission starts the case again"
+    else
+      echo "job: unexpected exit $_code: not requeued"
+    fi
+    ;;
+  esac
+  return "$_code"
+}
+

@@ -1,10 +1,13 @@
 #!/bin/sh
-# Runs one case folder of a sweep (made by sweep-gen.sh), or any folder that
-# holds a deck case.nml: skip it if it is complete, else check the deck with
-# `raccord --check`, then run `raccord --output CASEDIR CASEDIR/case.nml`.
+# Runs one case folder of a sweep (made by sweep-gen.sh), or one deck into a
+# results folder: skip it if it is complete, else check the deck with
+# `raccord --check`, then run `raccord --output CASEDIR DECK`.
 # Used by sweep-local.sh and the Slurm templates; doc/hpc.md.
 #
-#   sh hpc/run-case.sh [-r RACCORD] CASEDIR
+#   sh hpc/run-case.sh [-r RACCORD] [-d DECK] CASEDIR
+#
+# DECK defaults to CASEDIR/case.nml; results are CASEDIR/<stem>.h5 etc., with
+# <stem> the deck's name without extension.
 #
 # Prints one line "case NAME: skipped|done|failed ..." and exits with
 # raccord's code (0 also when skipped; 2 when --check refuses the deck).
@@ -24,22 +27,27 @@ hpc_dir=$(cd "$(dirname "$0")" && pwd)
 . "$hpc_dir/lib.sh"
 
 raccord=
+deck=
 while [ $# -gt 0 ]; do
   case "$1" in
   -r | --raccord) [ $# -ge 2 ] || hpc_die "-r needs a value"; raccord=$2; shift 2 ;;
-  -*) hpc_die "unknown option '$1' (usage: run-case.sh [-r RACCORD] CASEDIR)" ;;
+  -d | --deck) [ $# -ge 2 ] || hpc_die "-d needs a value"; deck=$2; shift 2 ;;
+  -*) hpc_die "unknown option '$1' (usage: run-case.sh [-r RACCORD] [-d DECK] CASEDIR)" ;;
   *) break ;;
   esac
 done
-[ $# -eq 1 ] || hpc_die "usage: run-case.sh [-r RACCORD] CASEDIR"
+[ $# -eq 1 ] || hpc_die "usage: run-case.sh [-r RACCORD] [-d DECK] CASEDIR"
 dir=${1%/}
 name=$(basename "$dir")
-deck=$dir/$RACCORD_CASE_STEM.nml
+[ -n "$deck" ] || deck=$dir/$RACCORD_CASE_STEM.nml
+stem=$(basename "$deck")
+stem=${stem%.*}
 [ -f "$deck" ] || { echo "case $name: failed: no deck $deck"; exit 2; }
+mkdir -p "$dir" || { echo "case $name: failed: cannot create $dir"; exit 4; }
 raccord=$(hpc_find_raccord "$raccord") || { echo "case $name: failed: no raccord executable (set RACCORD)"; exit 1; }
 
-if hpc_case_done "$dir"; then
-  echo "case $name: skipped (complete: $dir/$RACCORD_CASE_STEM.h5)"
+if hpc_case_done "$dir" "$deck"; then
+  echo "case $name: skipped (complete: $dir/$stem.h5)"
   exit 0
 fi
 
@@ -103,8 +111,8 @@ attempt run "$code"
 secs=$(($(hpc_now) - start))
 case "$code" in
 0)
-  if [ -f "$dir/$RACCORD_CASE_STEM.h5" ]; then echo "case $name: done (${secs} s) [$dir]"
-  else echo "case $name: failed: exit 0 but no $RACCORD_CASE_STEM.h5 [$dir]"; exit 4; fi ;;
+  if [ -f "$dir/$stem.h5" ]; then echo "case $name: done (${secs} s) [$dir]"
+  else echo "case $name: failed: exit 0 but no $stem.h5 [$dir]"; exit 4; fi ;;
 5) echo "case $name: stopped at the wall-clock limit, checkpoint written (exit 5, ${secs} s): resubmit to go on [$dir]" ;;
 *) echo "case $name: failed (exit $code, ${secs} s): $(grep ERROR "$dir/run.out" | head -n 1 | cut -c 1-300) [$dir/run.out]" ;;
 esac
