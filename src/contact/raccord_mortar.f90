@@ -31,8 +31,8 @@ module raccord_mortar
   use raccord_contact_search, only: bins_t, build_bins, query_bins
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: segment_point
-  use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, project_along_field, intersect_ray, &
-    multiplier_basis, multiplier_breaks
+  use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
+    intersect_ray, multiplier_basis, multiplier_breaks
   implicit none
   private
 
@@ -66,6 +66,14 @@ module raccord_mortar
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
     logical, allocatable :: mark(:)           !< (master nseg) candidate already seen
     integer, allocatable :: cand(:)           !< candidates of the current slave segment
+    ! Projections of the master corner nodes on the current slave segment,
+    ! shared by the two master segments that meet at a corner, and F at the
+    ! slave nodes, shared by the two slave segments that meet at a node.
+    integer, allocatable :: mcorner(:,:)      !< (2, master nseg) corner index of the start and end
+    integer, allocatable :: xi_seg(:)         !< (master ncorner) slave segment xi_val belongs to, 0 none
+    real(wp), allocatable :: xi_val(:)        !< projected slave parameter of the corner
+    integer, allocatable :: f_seg(:)          !< (master ncorner) slave segment whose end f_end was taken at
+    real(wp), allocatable :: f_end(:)         !< F of project_along_field at that segment's end node
   end type mortar_work_t
 
   public :: init_mortar, build_mortar
@@ -80,7 +88,7 @@ contains
     character(len=*), intent(in) :: where
     type(mortar_work_t), intent(out) :: w
     type(error_t), intent(inout) :: err
-    integer :: k, a, c, stride, ns, nn
+    integer :: k, a, c, stride, ns, nn, nc
 
     if (multiplier == MULT_DUAL) then
       call raise_error(err, EXIT_INPUT, where // ': multiplier ''dual'' (Wohlmuth''s dual basis) is not ' // &
@@ -111,6 +119,17 @@ contains
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%mark(master%nseg), source=.false.)
     allocate(w%cand(max(16, master%nseg)))
+    ! Corner c of the master chain is master%corner(c); segment l runs from
+    ! corner l to corner l+1 (corner 1 again at the end of a closed loop).
+    nc = size(master%corner)
+    allocate(w%mcorner(2, master%nseg))
+    do k = 1, master%nseg
+      w%mcorner(1, k) = k
+      w%mcorner(2, k) = k + 1
+      if (master%closed .and. k == master%nseg) w%mcorner(2, k) = 1
+    end do
+    allocate(w%xi_seg(nc), w%f_seg(nc), source=0)
+    allocate(w%xi_val(nc), w%f_end(nc), source=0.0_wp)
     ! Local node a of slave segment k sits at chain position stride*(k-1)+1
     ! (start), stride*k+1 (end), stride*(k-1)+2 (mid): the order of
     ! contact_surface_t%node.
@@ -140,12 +159,14 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
     integer :: k, a, c, nen, ncand, ix, iy, nx, ny, first, last, q, l, t
-    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), p(2)
+    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), p(2), xi1, xi2
 
     w%multiplier = multiplier
     nen = slave%nen_seg
     call build_bins(bins, x, master%seg, master%nen_seg, reach)
     call slave_normals(slave, x, w)
+    w%xi_seg = 0
+    w%f_seg = 0
     w%nment = 0
     w%mptr(1) = 1
     slave_segments: do k = 1, slave%nseg
@@ -185,7 +206,12 @@ contains
       do t = 1, ncand
         l = w%cand(t)
         w%mark(l) = .false.
-        call integrate_overlap(slave, master, x, k, l, xs, nn, reach, w)
+        ! Segmentation (method brief section 5): the master ends seen from
+        ! the slave along its normal field, each corner projected once per
+        ! slave segment.
+        xi1 = corner_xi(w%mcorner(1, l))
+        xi2 = corner_xi(w%mcorner(2, l))
+        call integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, w)
       end do
       w%mptr(k + 1) = w%nment + 1
     end do slave_segments
@@ -205,6 +231,31 @@ contains
       end do
     end do
     call assemble_rows(slave, xpred, du, w, cs)
+  contains
+    !> Slave parameter of master corner c on slave segment k (xs, nn): the
+    !> root of project_along_field, computed once per (k, c). Its end values
+    !> F(-1), F(+1) are those of the slave nodes; F at the start node of k is
+    !> the end value the corner had on segment k - 1 when it was seen there.
+    real(wp) function corner_xi(c) result(xi)
+      integer, intent(in) :: c
+      real(wp) :: flo, fhi, pc(2)
+      if (w%xi_seg(c) == k) then
+        xi = w%xi_val(c)
+        return
+      end if
+      pc = x(:, master%corner(c))
+      if (k > 1 .and. w%f_seg(c) == k - 1) then
+        flo = w%f_end(c)
+      else
+        flo = end_offset(xs(:, 1), nn(:, 1), pc)
+      end if
+      fhi = end_offset(xs(:, 2), nn(:, 2), pc)
+      w%f_seg(c) = k
+      w%f_end(c) = fhi
+      xi = root_along_field(nen, xs, nn, pc, flo, fhi)
+      w%xi_seg(c) = k
+      w%xi_val(c) = xi
+    end function corner_xi
   end subroutine build_mortar
 
   !> Constraint rows in chain order from the per-segment integrals.
@@ -262,26 +313,25 @@ contains
 
   !> Mortar segments of slave segment k against master segment l, and their
   !> contributions to G1 (g1loc) and G21 (master entries).
-  subroutine integrate_overlap(slave, master, x, k, l, xs, nn, reach, w)
+  subroutine integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: k, l
-    real(wp), intent(in) :: xs(2, 3), nn(2, 3), reach
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3)
+    real(wp), intent(in) :: xi1, xi2      !< slave parameters of the master ends (project_along_field)
+    real(wp), intent(in) :: reach
     type(mortar_work_t), intent(inout) :: w
     integer :: nen, nenm, nb, ib, g, a, b, cm
-    real(wp) :: xm(2, 3), xi1, xi2, s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
+    real(wp) :: xm(2, 3), s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
       pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3)
 
     nen = slave%nen_seg
     nenm = master%nen_seg
-    call load_segment(master, x, l, xm)
-    ! Segmentation (method brief section 5): the master ends seen from the
-    ! slave along its normal field; the overlap in the slave parameter.
-    xi1 = project_along_field(nen, xs, nn, xm(:, 1))
-    xi2 = project_along_field(nen, xs, nn, xm(:, 2))
+    ! The overlap in the slave parameter.
     s0 = min(xi1, xi2)
     s1 = max(xi1, xi2)
     if (s1 - s0 <= XI_SLIVER) return
+    call load_segment(master, x, l, xm)
     ! Only a master that faces the slave, within reach, counts (tested at
     ! the middle of the overlap: no coupling to far or back-facing parts).
     xi = 0.5_wp*(s0 + s1)
@@ -312,11 +362,14 @@ contains
       do g = 1, 3
         xi = 0.5_wp*(bounds(ib) + bounds(ib + 1)) + 0.5_wp*(bounds(ib + 1) - bounds(ib))*GS(g)
         wgt = 0.5_wp*(bounds(ib + 1) - bounds(ib))*GW(g)
-        call segment_point(nen, xs, xi, ps, ts)
-        dg = norm2(ts)*wgt                       ! dGamma = |dx_s/dxi| dxi
-        call normal_field(nen, nn, xi, n, dn)
-        eta = intersect_ray(nenm, xm, ps, n)
+        ! Slave point, tangent and normal field from one evaluation of the
+        ! slave shape functions (segment_point and normal_field in one).
         call shape_line(nen, xi, ns, dns)
+        ps = matmul(xs(:, 1:nen), ns(1:nen))
+        ts = matmul(xs(:, 1:nen), dns(1:nen))
+        n = matmul(nn(:, 1:nen), ns(1:nen))
+        dg = norm2(ts)*wgt                       ! dGamma = |dx_s/dxi| dxi
+        eta = intersect_ray(nenm, xm, ps, n)
         call shape_line(nenm, eta, nm, dnm)
         call multiplier_basis(nen, w%multiplier, xi, psi)
         do b = 1, nen
@@ -347,10 +400,17 @@ contains
     real(wp), intent(in) :: x(:,:)
     type(mortar_work_t), intent(inout) :: w
     integer :: k, a, c
-    real(wp) :: xs(2, 3)
+    real(wp) :: xs(2, 3), ns(2)
     w%nrm(:, 1:slave%nnode) = 0.0_wp
     do k = 1, slave%nseg
       call load_segment(slave, x, k, xs)
+      if (slave%nen_seg == 2) then
+        ! A straight segment has one normal: evaluate it once for both ends.
+        ns = outward_normal(2, xs, 0.0_wp)
+        w%nrm(:, w%pos(1, k)) = w%nrm(:, w%pos(1, k)) + ns
+        w%nrm(:, w%pos(2, k)) = w%nrm(:, w%pos(2, k)) + ns
+        cycle
+      end if
       do a = 1, slave%nen_seg
         c = w%pos(a, k)
         w%nrm(:, c) = w%nrm(:, c) + outward_normal(slave%nen_seg, xs, NODE_XI(a))

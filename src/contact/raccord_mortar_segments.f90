@@ -24,8 +24,8 @@ module raccord_mortar_segments
   !> Parameter of local node a (start, end, mid) on a segment.
   real(wp), parameter, public :: NODE_XI(3) = [-1.0_wp, 1.0_wp, 0.0_wp]
 
-  public :: outward_normal, normal_field, project_along_field, intersect_ray, multiplier_basis, &
-    multiplier_breaks, cross2
+  public :: outward_normal, normal_field, project_along_field, end_offset, root_along_field, intersect_ray, &
+    multiplier_basis, multiplier_breaks, cross2
 
 contains
 
@@ -67,32 +67,68 @@ contains
   pure real(wp) function project_along_field(nen, xs, nn, p) result(xi)
     integer, intent(in) :: nen
     real(wp), intent(in) :: xs(2, 3), nn(2, 3), p(2)
-    xi = bracketed_root(1, nen, xs, nn, p, [0.0_wp, 0.0_wp])
+    xi = root_along_field(nen, xs, nn, p, end_offset(xs(:, 1), nn(:, 1), p), end_offset(xs(:, 2), nn(:, 2), p))
   end function project_along_field
 
+  !> F of project_along_field at a slave node: (p - x_node) x n_node. It is
+  !> F(-1) of the segment that starts at the node and F(+1) of the one that
+  !> ends there (every shape function is exactly 0 or 1 at a node), so a
+  !> caller that projects the same point on consecutive slave segments can
+  !> evaluate it once per node (raccord_mortar).
+  pure real(wp) function end_offset(xnode, nnode, p) result(f)
+    real(wp), intent(in) :: xnode(2), nnode(2), p(2)
+    f = cross2(p - xnode, nnode)
+  end function end_offset
+
+  !> project_along_field with F(-1) = flo and F(+1) = fhi already known
+  !> (end_offset at the start and end nodes of the segment).
+  pure real(wp) function root_along_field(nen, xs, nn, p, flo, fhi) result(xi)
+    integer, intent(in) :: nen
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3), p(2), flo, fhi
+    xi = bracketed_root(1, nen, xs, nn, p, [0.0_wp, 0.0_wp], flo, fhi)
+  end function root_along_field
+
   !> Master parameter eta in [-1, 1] where the line q + alpha n meets the
-  !> master segment xm: root of G(eta) = (x_m(eta) - q) x n. Closed form for
-  !> a 2-node master (G linear), bracketed Newton for a 3-node one.
+  !> master segment xm: root of G(eta) = (x_m(eta) - q) x n, clipped to the
+  !> end where |G| is smaller when there is none inside. G is linear for a
+  !> 2-node master: eta = -1 + 2 G(-1) / (G(-1) - G(1)) in closed form (the
+  !> chord of the bracketed iteration, which one Newton step would only
+  !> move by round-off); bracketed Newton for a 3-node master.
   pure real(wp) function intersect_ray(nen, xm, q, n) result(eta)
     integer, intent(in) :: nen
     real(wp), intent(in) :: xm(2, 3), q(2), n(2)
-    real(wp) :: dummy(2, 3)
+    real(wp) :: dummy(2, 3), glo, ghi
+    glo = cross2(xm(:, 1) - q, n)
+    ghi = cross2(xm(:, 2) - q, n)
+    if (nen == 2) then
+      if (glo == 0.0_wp) then
+        eta = -1.0_wp
+      else if (ghi == 0.0_wp) then
+        eta = 1.0_wp
+      else if (sign(1.0_wp, glo) == sign(1.0_wp, ghi)) then
+        eta = merge(-1.0_wp, 1.0_wp, abs(glo) < abs(ghi))
+      else
+        eta = -1.0_wp - 2.0_wp*glo/(ghi - glo)
+      end if
+      return
+    end if
     dummy = 0.0_wp
-    eta = bracketed_root(2, nen, xm, dummy, q, n)
+    eta = bracketed_root(2, nen, xm, dummy, q, n, glo, ghi)
   end function intersect_ray
 
   !> Root on [-1, 1] of F (kind 1: along the normal field of segment xs;
-  !> kind 2: ray q + alpha n against segment xs), Newton kept inside a
-  !> shrinking sign-change bracket (bisection when a step leaves it).
-  pure real(wp) function bracketed_root(kind, nen, xs, nn, q, n) result(s)
+  !> kind 2: ray q + alpha n against segment xs), given its end values flo =
+  !> F(-1), fhi = F(+1): Newton kept inside a shrinking sign-change bracket
+  !> (bisection when a step leaves it).
+  pure real(wp) function bracketed_root(kind, nen, xs, nn, q, n, flo_in, fhi_in) result(s)
     integer, intent(in) :: kind, nen
-    real(wp), intent(in) :: xs(2, 3), nn(2, 3), q(2), n(2)
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3), q(2), n(2), flo_in, fhi_in
     real(wp) :: lo, hi, flo, fhi, f, fp, snew
     integer :: it
     lo = -1.0_wp
     hi = 1.0_wp
-    call eval(lo, flo, fp)
-    call eval(hi, fhi, fp)
+    flo = flo_in
+    fhi = fhi_in
     if (flo == 0.0_wp) then
       s = lo
       return
