@@ -102,13 +102,15 @@ worker() {
 }
 
 summary() { # interrupted?
-  ndone=0 nskip=0 nfail=0 nnot=0
+  ndone=0 nskip=0 nfail=0 nstop=0 nnot=0
   {
     i=1
     while [ "$i" -le "$n" ]; do
       name=$(hpc_case_line "$outdir" "$i" | cut -f 2)
       if [ -f "$claims/$i/outcome" ]; then
         read -r what code rest < "$claims/$i/outcome"
+      elif [ -d "$claims/$i" ]; then
+        what=stopped code=-
       else
         what=not-run code=-
       fi
@@ -120,11 +122,12 @@ summary() { # interrupted?
         stage=run
         grep -q 'failed at check' "$claims/$i/line" 2>/dev/null && stage=check
         printf '  %-8s %3d  %-28s %s  exit %s (%s)\n' failed "$i" "$name" "$outdir/$name" "$code" "$stage" ;;
+      stopped) nstop=$((nstop + 1)); printf '  %-8s %3d  %-28s %s\n' stopped "$i" "$name" "$outdir/$name" ;;
       *) nnot=$((nnot + 1)); printf '  %-8s %3d  %-28s %s\n' not-run "$i" "$name" "$outdir/$name" ;;
       esac
       i=$((i + 1))
     done
-    echo "sweep $outdir: $n cases: $ndone done, $nskip skipped, $nfail failed$([ "$nnot" -eq 0 ] || echo ", $nnot not run")$1"
+    echo "sweep $outdir: $n cases: $ndone done, $nskip skipped, $nfail failed$([ "$nstop" -eq 0 ] || echo ", $nstop stopped")$([ "$nnot" -eq 0 ] || echo ", $nnot not run")$1"
   } > "$claims/summary"
   cp "$claims/summary" "$outdir/summary.txt"
   echo "summary:"

@@ -122,7 +122,9 @@ BEGIN {
         fail(where ": case " tok[2] " has " ntok - 2 " values for " ncol " columns" (ncol ? " (" colnames() ")" : " (no columns line)"))
       if (tok[2] !~ /^[A-Za-z0-9][A-Za-z0-9._+=-]*$/)
         fail(where ": case name '" tok[2] "': letters, digits and . _ + = - only, starting with a letter or digit (it names the case folder)")
-      nrow++; rowname[nrow] = tok[2]; rowline[nrow] = ln
+      if (tok[2] in rowat) fail(where ": a second case " tok[2] " (the first is on line " rowat[tok[2]] ")")
+      rowat[tok[2]] = ln
+      nrow++; rowname[nrow] = tok[2]
       for (i = 1; i <= ncol; i++) rowval[nrow, i] = format_value(col[i], tok[i + 2], quoted[i + 2], where)
     } else if (kw == "vary") {
       if (ntok < 3) fail(where ": vary NAME[:TYPE] VALUE VALUE ...")
@@ -160,9 +162,9 @@ BEGIN {
       s = substr(s, RSTART + RLENGTH)
     }
   }
+  for (k in ptypeof) if (!(k in used)) warn(pline[k] ": parameter " k " is not used in the template " template)
   if (bad != "")
     fail("placeholders without a value in the sweep file " sweep ":" bad "\n(parameters defined: " (pnames == "" ? "none" : pnames) "; set by sweep-gen.sh: " builtin_list ")")
-  for (k in ptypeof) if (!(k in used)) warn(sweep ":" pline[k] ": parameter " k " is not used in the template " template)
 
   # Cases: every case line (or one unnamed row) times every combination of vary values.
   if (!nrow) { nrow = 1; rowname[1] = ""; norow = 1 }
@@ -199,8 +201,8 @@ BEGIN {
     dir = outdir "/" cname[c]
     if (system("mkdir -p " shq(dir)) != 0) fail("cannot create " dir)
     deck = dir "/case.nml.new"
-    print "! Case " cname[c] " (" c " of " ncase ") of the sweep " sweep > deck
-    print "! from the template " template ": " plist > deck
+    # (no sweep file name, case count or date here: a deck changes only with its values)
+    print "! Sweep case " cname[c] ", template " template ": " plist > deck
     print "! Written by hpc/sweep-gen.sh; edit the sweep file or the template, not this deck." > deck
     for (i = 1; i <= nt; i++) {
       s = tl[i]; out = ""
