@@ -3,7 +3,7 @@
 #
 #   sh hpc_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
 #
-# CASE        subst, errors, local, bad_case, kill, array, exit_codes
+# CASE        subst, errors, local, bad_case (and sweep-collect.sh), kill, array, exit_codes
 # RACCORD     the raccord executable (real runs and --check)
 # SOURCE_DIR  the repository (hpc/ and tests/data/app/bar_coarse.msh)
 # WORK_DIR    a folder of this case alone, emptied first
@@ -286,6 +286,11 @@ bad_case)
   check "the bad case was not run (no result, no run.out)" sh -c "[ ! -e sw/bad/case.h5 ] && [ ! -e sw/bad/run.out ] && [ -z \"\$(find sw/bad -name '*.h5*')\" ]"
   check "the bad case's check.txt says why" has sw/bad/check.txt "poisson"
   check "good1 and good2 complete" sh -c "[ -s sw/good1/case.h5 ] && [ -s sw/good2/case.h5 ]"
+  sh "$hpc/sweep-collect.sh" sw right_Fx > collect.out
+  cat collect.out
+  check "sweep-collect: good1 done, right_Fx = -1000" awk -F '\t' '
+    $2 == "good1" && $3 == "done" && $4 + 1000 < 1e-6 && $4 + 1000 > -1e-6 { f = 1 } END { exit !f }' collect.out
+  check "sweep-collect: bad refused" awk -F '\t' '$2 == "bad" && $3 == "refused" { f = 1 } END { exit !f }' collect.out
   ;;
 
 kill)
