@@ -199,3 +199,16 @@ hpc_job_case() {
   return "$_code"
 }
 
+
+# hpc_first_error FILE: raccord's first error message in FILE (the line
+# "ERROR [caller] ..."; else the first line with ERROR), cut to 300 characters.
+hpc_first_error() {
+  awk '/^ERROR \[/ { print substr($0, 1, 300); found = 1; exit }
+       /ERROR/ && first == "" { first = substr($0, 1, 300) }
+       END { if (!found && first != "") print first }' "$1" 2>/dev/null
+}
+
+# gfortran's backtrace after an error exit is noise in the case files
+# (doc/user-guide.md section 13); the message itself stays.
+: "${GFORTRAN_ERROR_BACKTRACE:=0}"
+export GFORTRAN_ERROR_BACKTRACE

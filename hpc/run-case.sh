@@ -59,7 +59,7 @@ attempt() { # stage code
 code=$?
 if [ "$code" -ne 0 ]; then
   attempt check "$code"
-  echo "case $name: failed at check (exit $code): $(grep ERROR "$dir/check.txt" | head -n 1 | cut -c 1-300) [$dir/check.txt]"
+  echo "case $name: failed at check (exit $code): $(hpc_first_error "$dir/check.txt") [$dir/check.txt]"
   exit "$code"
 fi
 
@@ -114,6 +114,6 @@ case "$code" in
   if [ -f "$dir/$stem.h5" ]; then echo "case $name: done (${secs} s) [$dir]"
   else echo "case $name: failed: exit 0 but no $stem.h5 [$dir]"; exit 4; fi ;;
 5) echo "case $name: stopped at the wall-clock limit, checkpoint written (exit 5, ${secs} s): resubmit to go on [$dir]" ;;
-*) echo "case $name: failed (exit $code, ${secs} s): $(grep ERROR "$dir/run.out" | head -n 1 | cut -c 1-300) [$dir/run.out]" ;;
+*) echo "case $name: failed (exit $code, ${secs} s): $(hpc_first_error "$dir/run.out") [$dir/run.out]" ;;
 esac
 exit "$code"

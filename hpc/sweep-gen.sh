@@ -88,7 +88,7 @@ while [ "$i" -le "$n" ]; do
       echo "ok    $i $name ($what)"
     else
       bad=$((bad + 1))
-      why=$(grep 'ERROR' "$dir/check.txt" | head -n 1 | cut -c 1-300)
+      why=$(hpc_first_error "$dir/check.txt")
       echo "BAD   $i $name ($what): raccord --check exit $code: $why"
     fi
   else
