@@ -1,0 +1,218 @@
+#!/bin/sh
+# Bad-input fuzz set of raccord: generate the cases (make_cases.sh) from the
+# seeds, run raccord on each with a time limit, check how it fails.
+#
+#   sh fuzz_bad_inputs.sh RACCORD WORK_DIR [SEED_DIR]
+#
+# RACCORD   the raccord executable
+# WORK_DIR  scratch folder, emptied first; WORK_DIR/cases/<case>/ keeps each
+#           case's inputs and what the run printed (stdout.txt, stderr.txt,
+#           exit.txt) for a look after a failure
+# SEED_DIR  default: the seeds/ folder next to this script
+#
+# Environment: FUZZ_TIMEOUT (seconds per run, default 20), FUZZ_ONLY (run
+# only the cases whose name contains this text), FUZZ_BACKTRACE=1 (run with
+# gfortran's backtraces on, see below).
+#
+# gfortran's backtrace after an ERROR STOP costs about 0.35 s per run (it
+# calls addr2line), which would make the set take minutes; so the runs have
+# GFORTRAN_ERROR_BACKTRACE=0 (doc/user-guide.md, section 13). Crashes stay
+# visible without it: a run-time check still prints "Fortran runtime
+# error", a signal still ends the process with exit >= 128. Each failed
+# case is run once more with the backtrace on, into stderr.backtrace.txt.
+#
+# Every case whose input is bad must end with:
+#   - an exit code in the case's expected set (1 bad command line, 2 bad
+#     scene or mesh, 3 numerical failure, 4 file system failure; see
+#     make_cases.sh for which family expects which);
+#   - no crash: no signal (exit >= 128, or the time limit), no "Fortran
+#     runtime error", no "Program received signal", no "Segmentation
+#     fault", no "Backtrace" unless raccord stopped itself (its own message
+#     "ERROR [caller] ..." and gfortran's "ERROR STOP <exit code>" are both
+#     on stderr; gfortran writes the ERROR STOP and backtrace before
+#     raccord's buffered message, so the order is not checked);
+#   - a line "ERROR [...] <text>" on stderr naming the problem;
+#   - no result file that looks complete: no <stem>.h5, .xmf, .history.txt
+#     or .contact<k>.txt without ".incomplete" or ".part" in its name.
+# A random mutation ("maybe") that exits 0 is a valid input: it is counted
+# apart and must then be a clean, complete run (complete files, nothing
+# .part / .incomplete, no ERROR line, no crash). A mutation of comments only
+# ("valid") must run like that.
+#
+# Known failures (known_failures.txt next to this script: one case name a
+# line, "#" comments naming the bug) are run and reported, but do not count
+# among the failures; one that passes is reported so it can be moved back.
+#
+# Output: one line "FAIL <case folder>: <reason>" per failed case, a count
+# per family, and the last line "fuzz: N passed, M failed". Exit 1 when M > 0.
+set -u
+LC_ALL=C
+export LC_ALL
+
+raccord=$1
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+seeds=${3:-$here/seeds}
+limit=${FUZZ_TIMEOUT:-20}
+if [ "${FUZZ_BACKTRACE:-0}" = 1 ]; then bt=1; else bt=0; fi
+only=${FUZZ_ONLY:-}
+known_list=$here/known_failures.txt
+min_bad=300
+
+case $raccord in /*) ;; *) raccord=$(pwd)/$raccord ;; esac
+[ -x "$raccord" ] || { echo "fuzz: $raccord is not an executable" >&2; exit 2; }
+command -v timeout > /dev/null 2>&1 || { echo "fuzz: needs timeout (coreutils)" >&2; exit 2; }
+
+rm -rf "$work"
+mkdir -p "$work" || { echo "fuzz: cannot create $work" >&2; exit 2; }
+work=$(cd "$work" && pwd)
+cases=$work/cases
+start=$(date +%s)
+sh "$here/make_cases.sh" "$seeds" "$cases" || { echo "fuzz: make_cases.sh failed" >&2; exit 2; }
+
+# Mounts made by this script, unmounted on exit whatever happens.
+mounts=""
+cleanup() {
+  for m in $mounts; do umount "$m" 2> /dev/null; done
+  # leave the scratch folder writable for the next run's rm -rf
+  find "$work" -type d ! -perm -u+w -exec chmod u+w {} + 2> /dev/null
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+# Whether chmod stops this user from writing (it does not for root).
+probe=$work/.probe
+mkdir -p "$probe/ro" && chmod 555 "$probe/ro"
+if (: > "$probe/ro/x") 2> /dev/null; then chmod_protects=0; else chmod_protects=1; fi
+chmod 755 "$probe/ro"; rm -rf "$probe"
+
+is_known() { [ -f "$known_list" ] && awk -v n="$1" '{ sub(/#.*/, "") } $1 == n { f = 1 } END { exit !f }' "$known_list"; }
+meta() { sed -n "s/^$1=//p" "$2/case.txt"; }
+
+# check_case DIR: run the case in DIR; set $reason (empty = passed) and $outcome.
+check_case() {
+  dir=$1
+  family=$(meta family "$dir"); kind=$(meta kind "$dir"); expect=$(meta expect "$dir")
+  args=$(meta args "$dir"); setup=$(meta setup "$dir")
+  reason=""; outcome=bad
+  case $setup in
+    not_writable)
+      # -o ro/out or -o ro: ro a read-only folder; as root the folder would be
+      # writable anyway, so ro becomes a regular file and the output path
+      # lies under it (or is it).
+      if [ "$chmod_protects" = 1 ]; then mkdir "$dir/ro" && chmod 555 "$dir/ro"
+      else : > "$dir/ro"; echo "setup: running as root, ro is a regular file" > "$dir/setup.txt"; fi
+      ;;
+    disk_full)
+      mkdir -p "$dir/out"
+      if [ "$(id -u)" -ne 0 ] || ! mount -t tmpfs -o size=64k tmpfs "$dir/out" 2> /dev/null; then
+        outcome=skipped; echo "setup: cannot mount a tmpfs (not root?): skipped" > "$dir/setup.txt"
+        return
+      fi
+      mounts="$mounts $dir/out"
+      ;;
+  esac
+  # shellcheck disable=SC2086
+  (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=$bt exec timeout -k 5 "$limit" "$raccord" $args > stdout.txt 2> stderr.txt)
+  code=$?
+  echo "$code" > "$dir/exit.txt"
+  if [ "$setup" = disk_full ]; then
+    ls -la "$dir/out" > "$dir/out.listing.txt" 2>&1
+    df -k "$dir/out" >> "$dir/out.listing.txt" 2>&1
+  fi
+
+  err=$dir/stderr.txt
+  # Crashes, whatever the exit code.
+  if [ "$code" -eq 124 ] || [ "$code" -eq 137 ]; then
+    reason="no answer within ${limit} s (killed by timeout, exit $code)"
+  elif [ "$code" -ge 128 ]; then
+    reason="killed by a signal (exit $code)"
+  fi
+  crash=$(grep -m1 -E 'Fortran runtime error|Program received signal|Segmentation fault|Aborted|Floating point exception|malloc\(\)|double free|HDF5-DIAG' "$err")
+  [ -z "$reason" ] && [ -n "$crash" ] && reason="crash on stderr: $crash"
+  if [ -z "$reason" ] && grep -q Backtrace "$err"; then
+    if ! grep -q '^ERROR \[' "$err" || ! grep -qx "ERROR STOP $code" "$err"; then
+      reason="backtrace without raccord's own ERROR message and ERROR STOP $code"
+    fi
+  fi
+  # Complete-looking result files anywhere in the case folder.
+  complete=$(cd "$dir" && find . -type f \( -name '*.h5' -o -name '*.xmf' -o -name '*.history.txt' -o -name '*.contact*.txt' \) \
+    ! -name '*.incomplete*' ! -name '*.part*' -print | sort | tr '\n' ' ')
+
+  if [ "$code" -eq 0 ] && [ -z "$reason" ]; then
+    case $kind in
+      bad) reason="exit 0: the bad input was accepted${complete:+ (wrote $complete)}" ;;
+      maybe|valid)
+        outcome=valid
+        stem=$(echo "$args" | awk '{ f = $NF; sub(/.*\//, "", f); sub(/\.[^.]*$/, "", f); print f }')
+        odir=$(echo "$args" | awk '{ for (i = 1; i < NF; i++) if ($i == "-o" || $i == "--output") print $(i + 1) }')
+        for ext in h5 xmf history.txt; do
+          [ -s "$dir/$odir/$stem.$ext" ] || reason="$reason exit 0 but $odir/$stem.$ext missing;"
+        done
+        left=$(cd "$dir" && find . -name '*.part*' -o -name '*.incomplete*' | tr '\n' ' ')
+        [ -n "$left" ] && reason="$reason exit 0 but left $left;"
+        grep -q '^ERROR' "$err" && reason="$reason exit 0 with an ERROR line: $(grep -m1 '^ERROR' "$err");"
+        ;;
+    esac
+    return
+  fi
+  [ -n "$reason" ] && return
+  if [ "$kind" = valid ]; then
+    reason="only a comment changed, yet exit $code: $(grep -m1 '^ERROR \[' "$err")"
+    return
+  fi
+  case " $expect " in
+    *" $code "*) ;;
+    *) reason="exit $code, expected one of: $expect" ;;
+  esac
+  if ! grep -q '^ERROR \[[^]]*\] *[^ ]' "$err"; then
+    reason="${reason:+$reason; }no 'ERROR [...] message' line on stderr"
+  else
+    names=$(meta names "$dir")
+    if [ -n "$names" ] && ! grep '^ERROR \[' "$err" | grep -qiF -- "$names"; then
+      reason="${reason:+$reason; }the ERROR line does not name '$names': $(grep -m1 '^ERROR \[' "$err")"
+    fi
+  fi
+  if [ -n "$complete" ]; then
+    reason="${reason:+$reason; }complete-looking result files after exit $code: $complete"
+  fi
+}
+
+passed=0; failed=0; nbad=0; nvalid=0; nskip=0; nknown=0; nknown_fixed=0
+: > "$work/families.txt"
+for dir in "$cases"/*/; do
+  dir=${dir%/}
+  name=$(basename "$dir")
+  if [ -n "$only" ]; then case $name in *"$only"*) ;; *) continue ;; esac; fi
+  check_case "$dir"
+  echo "$(meta family "$dir") $outcome ${reason:+fail}" >> "$work/families.txt"
+  if [ "$outcome" = skipped ]; then
+    nskip=$((nskip + 1)); echo "skip $name: $(cat "$dir/setup.txt")"; continue
+  fi
+  if is_known "$name"; then
+    if [ -n "$reason" ]; then nknown=$((nknown + 1)); echo "KNOWN FAILURE $dir: $reason"
+    else nknown_fixed=$((nknown_fixed + 1)); echo "KNOWN FAILURE NOW PASSES $dir: move it out of known_failures.txt"; fi
+    continue
+  fi
+  if [ -n "$reason" ] && [ "$bt" = 0 ] && [ "$(meta setup "$dir")" = "" ]; then
+    (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=1 timeout -k 5 "$limit" "$raccord" $(meta args "$dir") > /dev/null 2> stderr.backtrace.txt)
+  fi
+  if [ -n "$reason" ]; then
+    failed=$((failed + 1)); echo "FAIL $dir: $reason"
+  else
+    passed=$((passed + 1))
+    if [ "$outcome" = valid ]; then nvalid=$((nvalid + 1)); else nbad=$((nbad + 1)); fi
+  fi
+done
+
+awk '{ n[$1]++; if ($2 == "valid") v[$1]++; if ($2 == "skipped") s[$1]++; if ($3 == "fail") f[$1]++ }
+  END { for (k in n) printf "  %-9s %4d cases, %3d valid mutants, %2d failed (known failures included), %d skipped\n", k, n[k], v[k], f[k], s[k] }' \
+  "$work/families.txt" | sort
+elapsed=$(($(date +%s) - start))
+echo "fuzz: $nbad bad inputs refused as expected, $nvalid mutants were valid inputs (ran through cleanly), $nskip skipped, $nknown known failures (known_failures.txt), $nknown_fixed known failures now passing; ${elapsed} s"
+if [ -z "$only" ] && [ $((nbad + nknown)) -lt "$min_bad" ]; then
+  echo "FAIL $cases: only $((nbad + nknown)) genuinely bad cases were checked, fewer than $min_bad"
+  failed=$((failed + 1))
+fi
+echo "fuzz: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
