@@ -63,6 +63,11 @@ case $raccord in /*) ;; *) raccord=$(pwd)/$raccord ;; esac
 [ -x "$raccord" ] || { echo "fuzz: $raccord is not an executable" >&2; exit 2; }
 command -v timeout > /dev/null 2>&1 || { echo "fuzz: needs timeout (coreutils)" >&2; exit 2; }
 
+# A tmpfs left mounted by a killed earlier run (CTest's timeout) would stop rm -rf.
+if [ -d "$work" ] && [ -r /proc/mounts ]; then
+  w=$(cd "$work" && pwd)
+  awk -v w="$w/" 'index($2, w) == 1 { print $2 }' /proc/mounts | while read -r m; do umount "$m"; done
+fi
 rm -rf "$work"
 mkdir -p "$work" || { echo "fuzz: cannot create $work" >&2; exit 2; }
 work=$(cd "$work" && pwd)
@@ -119,6 +124,9 @@ check_case() {
   if [ "$setup" = disk_full ]; then
     ls -la "$dir/out" > "$dir/out.listing.txt" 2>&1
     df -k "$dir/out" >> "$dir/out.listing.txt" 2>&1
+    # keep what the run left (for the checks below and a look later), then unmount
+    mkdir -p "$dir/out.kept" && cp -p "$dir/out"/* "$dir/out.kept/" 2> /dev/null
+    umount "$dir/out" && rmdir "$dir/out" && mv "$dir/out.kept" "$dir/out"
   fi
 
   err=$dir/stderr.txt
@@ -128,10 +136,10 @@ check_case() {
   elif [ "$code" -ge 128 ]; then
     reason="killed by a signal (exit $code)"
   fi
-  crash=$(grep -m1 -E 'Fortran runtime error|Program received signal|Segmentation fault|Aborted|Floating point exception|malloc\(\)|double free|HDF5-DIAG' "$err")
+  crash=$(grep -a -m1 -E 'Fortran runtime error|Program received signal|Segmentation fault|Aborted|Floating point exception|malloc\(\)|double free|HDF5-DIAG' "$err")
   [ -z "$reason" ] && [ -n "$crash" ] && reason="crash on stderr: $crash"
-  if [ -z "$reason" ] && grep -q Backtrace "$err"; then
-    if ! grep -q '^ERROR \[' "$err" || ! grep -qx "ERROR STOP $code" "$err"; then
+  if [ -z "$reason" ] && grep -aq Backtrace "$err"; then
+    if ! grep -aq '^ERROR \[' "$err" || ! grep -aqx "ERROR STOP $code" "$err"; then
       reason="backtrace without raccord's own ERROR message and ERROR STOP $code"
     fi
   fi
@@ -151,26 +159,26 @@ check_case() {
         done
         left=$(cd "$dir" && find . -name '*.part*' -o -name '*.incomplete*' | tr '\n' ' ')
         [ -n "$left" ] && reason="$reason exit 0 but left $left;"
-        grep -q '^ERROR' "$err" && reason="$reason exit 0 with an ERROR line: $(grep -m1 '^ERROR' "$err");"
+        grep -aq '^ERROR' "$err" && reason="$reason exit 0 with an ERROR line: $(grep -a -m1 '^ERROR' "$err");"
         ;;
     esac
     return
   fi
   [ -n "$reason" ] && return
   if [ "$kind" = valid ]; then
-    reason="only a comment changed, yet exit $code: $(grep -m1 '^ERROR \[' "$err")"
+    reason="only a comment changed, yet exit $code: $(grep -a -m1 '^ERROR \[' "$err")"
     return
   fi
   case " $expect " in
     *" $code "*) ;;
     *) reason="exit $code, expected one of: $expect" ;;
   esac
-  if ! grep -q '^ERROR \[[^]]*\] *[^ ]' "$err"; then
+  if ! grep -aq '^ERROR \[[^]]*\] *[^ ]' "$err"; then
     reason="${reason:+$reason; }no 'ERROR [...] message' line on stderr"
   else
     names=$(meta names "$dir")
-    if [ -n "$names" ] && ! grep '^ERROR \[' "$err" | grep -qiF -- "$names"; then
-      reason="${reason:+$reason; }the ERROR line does not name '$names': $(grep -m1 '^ERROR \[' "$err")"
+    if [ -n "$names" ] && ! grep -a '^ERROR \[' "$err" | grep -qiF -- "$names"; then
+      reason="${reason:+$reason; }the ERROR line does not name '$names': $(grep -a -m1 '^ERROR \[' "$err")"
     fi
   fi
   if [ -n "$complete" ]; then
