@@ -6,4 +6,7 @@ cd "$(dirname "$0")/.."
 sh tools/install-packages.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)"
-./build/raccord input/examples/bar_wave.nml
+# The default scene, the paper's Fig. 2(a) (input/paper/fig2a_mortar_p1_slave_block.nml
+# and its slave = disc twin, two runs side by side, about 15 s each), drawn in
+# results/paper/figures/fig2a.png and .pdf (tools/paper-figures.sh).
+sh tools/paper-figures.sh results/paper fig2a

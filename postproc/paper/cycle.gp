@@ -14,15 +14,23 @@ set ylabel 'force -R_y on the disc top (N/mm), pushing > 0'
 set key top left
 # Columns found by name in the history header ('# N name').
 col(file, name) = int(system(sprintf("awk -v n='%s' '$1 == \"#\" && $3 == n { print $2; f = 1; exit } END { if (!f) print 0 }' '%s'", name, file)))
-runs = 'fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block fig3_mortar_p1_mu020'
-titles = 'NTS,_slave_=_block NTS,_slave_=_disc mortar_P1,_slave_=_block mortar_P1,_slave_=_disc mortar_P0,_slave_=_block mortar_P1,_{/Symbol m}_=_0.2'
-f1 = hist(word(runs, 1))
+f1 = hist('fig1b_nts_slave_block')
 cuy = col(f1, 'disc_top_uy')
 cry = col(f1, 'disc_top_Ry')
 ct = col(f1, 'time')
 T = 2.0e-5
-tt(k) = system(sprintf("echo '%s' | tr _ ' '", word(titles, k)))
-plot for [k = 1:words(runs)] hist(word(runs, k)) using (column(ct) <= T*1.0001 ? -column(cuy) : NaN):(-column(cry)) \
-       with lines lw 1.5 lc k title tt(k) . ', loading', \
-     for [k = 1:words(runs)] hist(word(runs, k)) using (column(ct) > T*1.0001 ? -column(cuy) : NaN):(-column(cry)) \
-       with lines lw 1.2 dt 2 lc k title tt(k) . ', unloading'
+load_x(dummy) = column(ct) <= T*1.0001 ? -column(cuy) : NaN
+unload_x(dummy) = column(ct) > T*1.0001 ? -column(cuy) : NaN
+set key font ',9' spacing 0.9
+plot hist('fig1b_nts_slave_block')       using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 1 title 'NTS, slave = block, loading', \
+     hist('fig1b_nts_slave_disc')        using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 2 title 'NTS, slave = disc, loading', \
+     hist('fig2a_mortar_p1_slave_block') using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 3 title 'mortar P1, slave = block, loading', \
+     hist('fig2a_mortar_p1_slave_disc')  using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 4 title 'mortar P1, slave = disc, loading', \
+     hist('fig2b_mortar_p0_slave_block') using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 6 title 'mortar P0, slave = block, loading', \
+     hist('fig3_mortar_p1_mu020')        using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 7 title 'mortar P1, {/Symbol m} = 0.2, loading', \
+     hist('fig1b_nts_slave_block')       using (unload_x(0)):(-column(cry)) with lines dt 2 lc 1 title 'unloading (dashed, same colours)', \
+     hist('fig1b_nts_slave_disc')        using (unload_x(0)):(-column(cry)) with lines dt 2 lc 2 notitle, \
+     hist('fig2a_mortar_p1_slave_block') using (unload_x(0)):(-column(cry)) with lines dt 2 lc 3 notitle, \
+     hist('fig2a_mortar_p1_slave_disc')  using (unload_x(0)):(-column(cry)) with lines dt 2 lc 4 notitle, \
+     hist('fig2b_mortar_p0_slave_block') using (unload_x(0)):(-column(cry)) with lines dt 2 lc 6 notitle, \
+     hist('fig3_mortar_p1_mu020')        using (unload_x(0)):(-column(cry)) with lines dt 2 lc 7 notitle

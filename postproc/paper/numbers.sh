@@ -44,20 +44,43 @@ stats() {
       printf "%-34s peak %8.1f MPa at x = %+.4f  active %3d nodes, x in [%+.4f, %+.4f], width %.4f mm  integral %7.1f N/mm\n", \
         name, pk, xp, na, xl, xr, xr - xl, F
       if (mu > 0) {
-        r1 = 0; r2 = 0; nst = 0; nsl = 0; xst = 0; xsl = 1e30; xslmax = 0; bad = 0
+        # Coulomb, as the solver imposes it: on the nodal forces (shear and
+        # pressure are both nodal force / tributary length), and on the
+        # multipliers themselves where lambda_n > 5 % of its peak.
+        r1 = 0; r2 = 0; pkn = 0
+        for (i = 1; i <= n; i++) if (tn[i] > pkn) pkn = tn[i]
         for (i = 1; i <= n; i++) {
           if (st[i] == 0) continue
-          a = (x[i] < 0 ? -x[i] : x[i])
-          if (tn[i] > 0) { q = (tt[i] < 0 ? -tt[i] : tt[i]) / (mu * tn[i]); if (q > r1) r1 = q }
           if (ps[i] > 0) { q = (sh[i] < 0 ? -sh[i] : sh[i]) / (mu * ps[i]); if (q > r2) r2 = q }
-          if (st[i] == 1) { nst++; if (a > xst) xst = a }
-          if (st[i] == 2) { nsl++; if (a < xsl) xsl = a; if (a > xslmax) xslmax = a }
+          if (tn[i] > 0.05 * pkn) { q = (tt[i] < 0 ? -tt[i] : tt[i]) / (mu * tn[i]); if (q > r1) { r1 = q; x1 = x[i] } }
         }
-        for (i = 1; i <= n; i++) if (st[i] == 2) { a = (x[i] < 0 ? -x[i] : x[i]); if (a < xst) bad++ }
-        printf "%-34s mu = %.1f: max |lambda_t|/(mu lambda_n) = %.4f, max |shear|/(mu pressure) = %.4f; stick %d nodes (|x| <= %.4f), slip %d nodes (%.4f <= |x| <= %.4f), slip nodes inside the stick zone: %d\n", \
-          "", mu, r1, r2, nst, xst, nsl, (nsl ? xsl : 0), xslmax, bad
+        # on the cone (|shear| >= 0.99 mu pressure) = slipping or about to;
+        # inside = sticking. Zones by |x|.
+        aon = 1e30; non = 0; aonmax = 0
+        for (i = 1; i <= n; i++) {
+          if (st[i] == 0 || ps[i] <= 0) continue
+          a = (x[i] < 0 ? -x[i] : x[i]); q = (sh[i] < 0 ? -sh[i] : sh[i]) / (mu * ps[i])
+          if (q >= 0.99) { non++; if (a < aon) aon = a; if (a > aonmax) aonmax = a }
+        }
+        ncore = 0; nedge = 0; nmid = 0
+        for (i = 1; i <= n; i++) {
+          if (st[i] == 0 || ps[i] <= 0) continue
+          a = (x[i] < 0 ? -x[i] : x[i]); q = (sh[i] < 0 ? -sh[i] : sh[i]) / (mu * ps[i])
+          if (q < 0.99) { if (a < aon) ncore++; else if (a > aonmax) nedge++; else nmid++ }
+        }
+        if (non) printf "%-34s   on the cone (|shear| >= 0.99 mu p, slip) %d nodes, %.4f <= |x| <= %.4f; inside it (stick): %d nodes in the centre |x| < %.4f, %d between, %d at the contact edges\n", "", non, aon, aonmax, ncore, aon, nmid, nedge
+        else printf "%-34s   no node on the cone: the whole contact sticks\n", ""
       }
     }'
+}
+
+# status_at NAME FRAME: stick and slip nodes (status column) at a frame
+status_at() {
+  awk -v fr="$2" -v name="$1" '/^# frame/ { f = $3; next } /^#/ { next }
+    f == fr && NF >= 10 { a = ($2 < 0 ? -$2 : $2)
+      if ($7 == 1) { ns++; if (a > as) as = a }
+      if ($7 == 2) { nl++; if (!ml || a < al) { al = a; ml = 1 } if (a > alx) alx = a } }
+    END { printf "%-34s frame %2d: stick %3d nodes (|x| <= %.4f), slip %3d nodes (%.4f <= |x| <= %.4f)\n", name, fr, ns, as, nl, al, alx }' "$(prof "$1")"
 }
 
 # diff NAME1 COL1 NAME2 COL2 LABEL: max |v1 - v2| / max peak, all nodes and inner nodes
@@ -95,8 +118,8 @@ hist_at() {
     /^#/ { next }
     { d = $1 - T; if (d < 0) d = -d; if (!seen || d < best) { best = d; seen = 1; for (k = 1; k <= NF; k++) row[k] = $k } }
     END {
-      printf "%-34s t = %.4e: KE/IE = %.2e  contact1_N = %7.1f  -disc_top_Ry = %7.1f  block_bottom_Ry = %7.1f N/mm  (uy = %.5f)\n", \
-        name, row[c["time"]], row[c["kinetic"]] / row[c["internal"]], row[c["contact1_N"]], -row[c["disc_top_Ry"]], \
+      printf "%-34s t = %.4e: KE/IE = %.2e  |contact1_Fy| = %7.1f  contact1_N = %7.1f  -disc_top_Ry = %7.1f  block_bottom_Ry = %7.1f N/mm  (uy = %.5f)\n", \
+        name, row[c["time"]], row[c["kinetic"]] / row[c["internal"]], (row[c["contact1_Fy"]] < 0 ? -row[c["contact1_Fy"]] : row[c["contact1_Fy"]]), row[c["contact1_N"]], -row[c["disc_top_Ry"]], \
         row[c["block_bottom_Ry"]], row[c["disc_top_uy"]]
     }' "$(hist "$1")"
 }
@@ -155,6 +178,10 @@ for mu in 010 020 050; do
 done
 stats fig4b_q8_mortar_p1_mu020 9 0.2
 stats fig4b_q8_mortar_p0_mu020 9 0.2
+echo "## status column at frame 10 (t = T/2, fastest loading) and frame 20 (t = T, the load at rest: no increment, so little slips)"
+for n in fig3_mortar_p1_mu010 fig3_mortar_p1_mu020 fig3_mortar_p1_mu050 fig3_mortar_p0_mu020 fig4b_q8_mortar_p1_mu020; do
+  status_at $n 10; status_at $n 20
+done
 echo
 echo "## 6. Method against method (pressure, col 5; slave = block)"
 diff2 fig2a_mortar_p1_slave_block 5 fig1b_nts_slave_block 5 "mortar P1 / node-to-segment"
