@@ -9,6 +9,7 @@
 !> correction at t(n+1) (forward increment), energy account, outputs.
 program raccord_main
   use, intrinsic :: iso_fortran_env, only: output_unit
+  use, intrinsic :: iso_c_binding, only: c_int
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, &
@@ -158,12 +159,28 @@ contains
   subroutine finish(e)
     type(error_t), intent(in) :: e
     type(error_t) :: close_err
+    interface
+      ! POSIX _exit: leave without running atexit handlers.
+      subroutine c_exit(status) bind(C, name='_exit')
+        import :: c_int
+        integer(c_int), value :: status
+      end subroutine c_exit
+    end interface
     if (.not. e%failed()) return
     call close_outputs(out, .false., e%message, close_err)
     call log_error('raccord', e%message)
     if (e%code /= EXIT_USAGE .and. e%code /= EXIT_INPUT) &
       call log_error('raccord', 'run stopped; result files (if any) are marked incomplete')
+    if (close_err%failed()) call log_error('raccord', close_err%message)
     call log_close()
+    ! A result file that could not be closed (full disk) is still in the
+    ! HDF5 library's list of open files, and the library's exit-time cleanup
+    ! crashes on it (SIGSEGV instead of our exit code). Our own files are
+    ! flushed and closed by now, so leave without that cleanup.
+    if (close_err%failed() .or. e%code == EXIT_IO) then
+      flush(output_unit)
+      call c_exit(int(e%code, c_int))
+    end if
     select case (e%code)
     case (EXIT_USAGE);     error stop 1
     case (EXIT_INPUT);     error stop 2

@@ -88,6 +88,9 @@ contains
     line = trim(tag(level)) // ' [' // caller // '] ' // text
     if (level >= LEVEL_WARN) then
       write(error_unit, '(a)') line
+      ! Before anything the runtime prints on the way out (ERROR STOP, a
+      ! backtrace): a job script looks for raccord's own line first.
+      flush(error_unit)
     else if (.not. quiet) then
       write(output_unit, '(a)') line
     end if

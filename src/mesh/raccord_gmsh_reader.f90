@@ -574,6 +574,11 @@ contains
       end if
     end if
     call split_fields(line, ' ', f, l, nf)
+    ! Keep exactly the fields the line has: get_int/get_real test the field
+    ! number against size(f), and a short (truncated) line must fail there
+    ! rather than read the buffer's unused slots.
+    f = f(1:nf)
+    l = l(1:nf)
     if (nf == 0) then
       call raise_error(err, EXIT_INPUT, here(tf) // ': empty line in $' // section // ' where ' // &
         expected(what, k, n) // ' was expected: re-export the mesh')

@@ -251,6 +251,7 @@ contains
     type(error_t), intent(inout) :: err
     type(int_map_t) :: side_map
     logical, allocatable :: shared(:)
+    integer, allocatable :: listed_by(:)
     integer :: e, s, k, prev, j, m, e_par, s_par, ends(3), loc(3), nen_max
     integer, allocatable :: nodes(:)
     character(len=:), allocatable :: at
@@ -266,6 +267,9 @@ contains
       end do
     end do
 
+    ! Which surface last listed each element side: an edge listed twice in
+    ! one surface would carry its load twice.
+    allocate(listed_by(4*mesh%nelem), source=0)
     allocate(mesh%surfaces(d%nsurf))
     do j = 1, d%nsurf
       associate (ds => d%surfaces(j), surf => mesh%surfaces(j))
@@ -311,6 +315,13 @@ contains
           e_par = (k - 1)/4 + 1
           s_par = k - 4*(e_par - 1)
           loc = side_nodes(mesh%etype(e_par), s_par)
+          if (listed_by(k) == j) then
+            call raise_error(err, EXIT_INPUT, at // ' lists the edge ' // str(mesh%node_id(mesh%conn(loc(1), e_par))) // &
+              '-' // str(mesh%node_id(mesh%conn(loc(2), e_par))) // ' twice (a load on it would count twice): ' // &
+              'remove the repeated line or face')
+            return
+          end if
+          listed_by(k) = j
           surf%edge(1:2, m) = mesh%conn(loc(1:2), e_par)
           surf%edge(3, m) = 0
           if (loc(3) > 0) surf%edge(3, m) = mesh%conn(loc(3), e_par)

@@ -280,6 +280,11 @@ contains
       end if
       return
     end if
+    if (mesh%surfaces(is)%nedge == 0) then
+      call raise_error(err, EXIT_INPUT, where // ': surface ''' // trim(bc%set) // ''' has no edges; ' // &
+        'give it its edges in the mesh (Abaqus: data lines under *SURFACE) or load another surface.')
+      return
+    end if
     traction = 0.0_wp
     pressure = 0.0_wp
     if (bc%kind == BC_TRACTION) traction = bc%value
