@@ -1,6 +1,7 @@
 #!/bin/sh
 # Command 1 of README: install the packages, build raccord (Release) and run
-# the default scene. Results land in results/<scene>/.
+# the default scene, the paper's Fig. 2(a). Runs land in results/paper/runs/,
+# the figure in results/paper/figures/.
 set -eu
 cd "$(dirname "$0")/.."
 sh tools/install-packages.sh
