@@ -190,7 +190,10 @@ contains
       e%external = e%external + w
       if (state%step == 0) e%initial = e%kinetic
       e%balance = e%discrete + e%damping + e%contact - e%external - e%initial
-      e%scale = max(e%scale, abs(e%kinetic), abs(e%internal), abs(e%external), abs(e%initial))
+      ! Every term of the balance sets the scale, so that a step-0 contact
+      ! correction on bodies at rest has a scale to be relative to.
+      e%scale = max(e%scale, abs(e%kinetic), abs(e%internal), abs(e%external), abs(e%initial), &
+        abs(e%discrete), abs(e%contact), abs(e%damping))
     end associate
   end subroutine update_energy
 

@@ -67,7 +67,10 @@ contains
         if (size(run%pairs) > 0) call enforce_contact(run%pairs, model, state, err)
         if (err%failed()) return
         call update_energy(model, state)
-        run%worst_balance = max(run%worst_balance, abs(state%energy%balance)/max(state%energy%scale, tiny(1.0_wp)))
+        ! Relative to the energies of the run; a step where all are zero has
+        ! nothing to be relative to (its balance is then zero too).
+        if (state%energy%scale > 0.0_wp) &
+          run%worst_balance = max(run%worst_balance, abs(state%energy%balance)/state%energy%scale)
         run%max_internal = max(run%max_internal, state%energy%internal)
         run%min_contact_work = min(run%min_contact_work, state%energy%contact)
         if (state%step == state%nsteps) exit
