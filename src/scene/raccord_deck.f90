@@ -20,6 +20,7 @@ module raccord_deck
   use raccord_strings, only: str, lower
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
   use raccord_deck_scan, only: deck_block_t, scan_deck, join_names
+  use raccord_deck_checks, only: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
   use raccord_deck_write, only: write_scene, real_text
   use raccord_scene, only: scene_t, run_spec_t, mesh_spec_t, body_spec_t, bc_spec_t, amplitude_spec_t, &
     time_spec_t, output_spec_t, contact_spec_t, MAX_TABLE, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, &
@@ -48,10 +49,6 @@ module raccord_deck
   character(len=*), parameter :: CONTACT_KEYS(*) = [character(len=16) :: 'slave', 'master', 'method', &
     'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations']
 
-  !> Keys whose value is text and so must be quoted in namelist input.
-  character(len=*), parameter :: TEXT_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file', &
-    'format', 'name', 'elset', 'hypothesis', 'set', 'type', 'components', 'amplitude', 'slave', 'master', &
-    'method', 'multiplier']
 
   !> Sentinel of required real keys: no deck sets a real to -huge.
   real(wp), parameter :: UNSET = -huge(1.0_wp)
@@ -850,136 +847,4 @@ contains
     spec%max_iterations = max_iterations
   end subroutine read_contact
 
-  ! ---------------------------------------------------------------- messages
-
-  !> "<deck>:<line>: &<group> '<label>'", the head of every message on a group.
-  pure function head(deck, blk, line, label) result(s)
-    character(len=*), intent(in) :: deck, label
-    type(deck_block_t), intent(in) :: blk
-    integer, intent(in) :: line
-    character(len=:), allocatable :: s
-    s = deck // ':' // str(line) // ': &' // blk%group
-    if (len(label) > 0) s = s // ' ''' // label // ''''
-  end function head
-
-  !> Keys are the group's own, text is quoted, and a key is not given twice.
-  subroutine check_keys(deck, blk, known, label, err)
-    character(len=*), intent(in) :: deck, label
-    type(deck_block_t), intent(in) :: blk
-    character(len=*), intent(in) :: known(:)
-    type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: value
-    integer :: k, j
-    do k = 1, size(blk%keys)
-      associate (key => blk%keys(k))
-        if (.not. any(known == key%name)) then
-          call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': unknown key ''' // &
-            key%name // ''' (known keys: ' // join_names(known) // '); check the spelling')
-          return
-        end if
-        if (any(TEXT_KEYS == key%name)) then
-          value = blk%value_text(k)
-          if (value(1:1) /= '''' .and. value(1:1) /= '"') then
-            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
-              ''' = ' // value // ': text must be in quotes; write ' // key%name // ' = ''' // value // '''')
-            return
-          end if
-        end if
-        if (.not. key%subscripted) then
-          do j = 1, k - 1
-            if (blk%keys(j)%name /= key%name .or. blk%keys(j)%subscripted) cycle
-            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
-              ''' is given a second time (first at line ' // str(blk%keys(j)%line) // '); keep one')
-            return
-          end do
-        end if
-      end associate
-    end do
-  end subroutine check_keys
-
-  !> The values of key k did not read as the key's type.
-  subroutine unreadable(deck, blk, k, label, iomsg, err)
-    character(len=*), intent(in) :: deck, label, iomsg
-    type(deck_block_t), intent(in) :: blk
-    integer, intent(in) :: k
-    type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: item
-    integer :: n
-    ! Quote the item as written, subscript included (velocity(3) = 1.0).
-    item = trim(adjustl(blk%text(blk%keys(k)%first:blk%keys(k)%last)))
-    n = len(item)
-    if (item(n:n) == ',') item = trim(item(1:n-1))
-    call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
-      blk%keys(k)%name // ''' (' // item // '): cannot read the value (' // trim(iomsg) // &
-      '); give ' // expected_form(blk%group, blk%keys(k)%name))
-  end subroutine unreadable
-
-  !> What a key's value looks like, for messages.
-  pure function expected_form(group, key) result(s)
-    character(len=*), intent(in) :: group, key
-    character(len=:), allocatable :: s
-    if (any(TEXT_KEYS == key)) then
-      s = 'text in quotes, e.g. ' // key // ' = ''...'''
-    else if (group == 'amplitude') then
-      s = 'a list of 1 to ' // str(MAX_TABLE) // ' real numbers, e.g. ' // key // ' = 0.0, 1.0'
-    else if (key == 'velocity' .or. key == 'body_force' .or. key == 'value') then
-      s = 'two real numbers (x, y), e.g. ' // key // ' = 0.0, -1.0'
-    else if (key == 'frames' .or. key == 'history_every' .or. key == 'max_iterations') then
-      s = 'a whole number, e.g. ' // key // ' = 20'
-    else if (key == 'stress') then
-      s = '.true. or .false.'
-    else
-      s = 'a real number, e.g. ' // key // ' = 1.0'
-    end if
-  end function expected_form
-
-  !> A key's value is out of its range or not one of the allowed words.
-  subroutine bad_value(deck, blk, label, key, problem, fix, err)
-    character(len=*), intent(in) :: deck, label, key, problem, fix
-    type(deck_block_t), intent(in) :: blk
-    type(error_t), intent(inout) :: err
-    integer :: k
-    character(len=:), allocatable :: given
-    k = blk%find(key)
-    given = ''
-    if (k > 0) given = ' = ' // blk%value_text(k)
-    call raise_error(err, EXIT_INPUT, head(deck, blk, blk%key_line(key), label) // ': key ''' // key // '''' // &
-      given // ': ' // problem // '; ' // fix)
-  end subroutine bad_value
-
-  !> A required key is absent (reported at the line where the group starts).
-  subroutine missing_key(deck, blk, label, key, example, err)
-    character(len=*), intent(in) :: deck, label, key, example
-    type(deck_block_t), intent(in) :: blk
-    type(error_t), intent(inout) :: err
-    call raise_error(err, EXIT_INPUT, head(deck, blk, blk%line, label) // ': required key ''' // key // &
-      ''' is missing; add ' // example)
-  end subroutine missing_key
-
-  !> A text value that fills its whole buffer was probably cut short.
-  subroutine check_length(deck, blk, label, key, value, err)
-    character(len=*), intent(in) :: deck, label, key, value
-    type(deck_block_t), intent(in) :: blk
-    type(error_t), intent(inout) :: err
-    if (len_trim(value) < len(value)) return
-    call bad_value(deck, blk, label, key, 'the text is too long (at most ' // str(len(value) - 1) // &
-      ' characters)', 'shorten it', err)
-  end subroutine check_length
-
-  !> NaN or infinity would pass or fail range checks by accident (and trap
-  !> in debug builds), so they are refused first.
-  subroutine check_finite(deck, blk, label, keys, values, err)
-    character(len=*), intent(in) :: deck, label
-    type(deck_block_t), intent(in) :: blk
-    character(len=*), intent(in) :: keys(:)
-    real(wp), intent(in) :: values(:)
-    type(error_t), intent(inout) :: err
-    integer :: k
-    do k = 1, size(values)
-      if (ieee_is_finite(values(k))) cycle
-      call bad_value(deck, blk, label, trim(keys(k)), 'the value is not a finite number', &
-        'give a finite real number', err)
-      return
-    end do
-  end subroutine check_finite
 end module raccord_deck
