@@ -239,6 +239,20 @@ contains
           st%nent = st%nent + 1
           st%ent(:, st%nent) = [dim, tag, phys]
         end do
+        ! Curves and surfaces end with their bounding entities: a count and
+        ! that many tags. A line whose counts do not add up has a wrong
+        ! physical count, and its tags would be read as the wrong groups.
+        if (dim > 0) then
+          call get_int(tf, line, f, l, first + nphys + 1, 'number of bounding entities', p, err)
+          if (err%failed()) return
+          if (nf /= first + nphys + 1 + p) then
+            call raise_error(err, EXIT_INPUT, here(tf) // ': entity ' // str(tag) // ' of dimension ' // &
+              str(dim) // ' declares ' // str(nphys) // ' physical tag(s) and ' // str(p) // &
+              ' bounding entities, but the line has ' // str(nf) // ' fields instead of ' // &
+              str(first + nphys + 1 + p) // ': the file is damaged, re-export the mesh')
+            return
+          end if
+        end if
       end do
     end do
     call expect_end(tf, 'Entities', err)
