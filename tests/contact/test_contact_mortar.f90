@@ -9,6 +9,7 @@ program test_contact_mortar
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
   use raccord_error, only: error_t
   use raccord_mesh, only: mesh_t, surface_t, ELEM_Q4, ELEM_Q8, find_node_set, find_surface
+  use two_bar_impact, only: check_two_bar_impact
   use raccord_scene, only: scene_t, BC_FIXED, BC_PRESSURE, METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0, &
     MULT_DUAL
   use raccord_model, only: model_t
@@ -579,87 +580,15 @@ contains
     call check(failure, max(b1, b0) < 1.0e-10_wp, 'energy balance not exact')
   end subroutine test_p0_vs_p1
 
-  !> Two identical bars (nu = 0) approach at +v and -v (as in
-  !> test_contact_nts): contact lasts 2L/c, velocities are exchanged,
-  !> momentum is conserved, no energy is gained, and the faces never cross.
-  subroutine impact_case(failure, nya, nyb, mult)
-    type(failure_t), allocatable, intent(inout) :: failure
-    integer, intent(in) :: nya, nyb, mult
-    real(wp), parameter :: e = 1000.0_wp, rho = 1.0e-6_wp, lx = 10.0_wp, gap0 = 0.01_wp
-    type(mesh_t) :: ma, mb, mesh
-    type(scene_t) :: scene
-    type(model_t) :: model
-    type(contact_pair_t), allocatable :: pairs(:)
-    type(time_plan_t) :: plan
-    type(state_t) :: state
-    type(error_t) :: err
-    real(wp) :: c, v, t0, t_first, t_last, pen_max, p_total, p_a, ke0, bal_max, mass_a, wc_min
-    integer :: ka, kb, i
-    integer, allocatable :: a_nodes(:)
-    logical :: in_contact
-
-    c = sqrt(e/rho)
-    v = 0.01_wp*c
-    call rect_mesh(ma, ELEM_Q4, 40, nya, lx, 1.0_wp)
-    call rect_mesh(mb, ELEM_Q4, 40, nyb, lx, 1.0_wp, x0=lx + gap0)
-    call two_body_scene(ma, mb, mesh, scene, e, 0.0_wp, rho, .true., 0.0_wp)
-    scene%bodies(1)%velocity = [v, 0.0_wp]
-    scene%bodies(2)%velocity = [-v, 0.0_wp]
-    t0 = gap0/(2.0_wp*v)
-    scene%time%t_end = t0 + 3.0_wp*lx/c
-    call add_pair(scene, 'a_right', 'b_left', METHOD_MORTAR, 0.0_wp)
-    scene%contacts(1)%multiplier = mult
-    call prepare(scene, mesh, model, pairs, plan, state, failure)
-    if (allocated(failure)) return
-    ka = find_node_set(mesh, 'a_right')
-    kb = find_node_set(mesh, 'b_left')
-    a_nodes = [(i, i = 1, ma%nnode)]
-    mass_a = sum(model%mass(a_nodes))
-    t_first = -1.0_wp
-    t_last = -1.0_wp
-    pen_max = 0.0_wp
-    bal_max = 0.0_wp
-    wc_min = 0.0_wp
-    ke0 = 0.0_wp
-    do
-      call contact_step(model, pairs, state, err)
-      if (err%failed()) exit
-      if (state%step == 0) ke0 = state%energy%kinetic
-      ! Penetration at t(n+1): a's right face beyond b's left face.
-      pen_max = max(pen_max, maxval(mesh%x(1, mesh%nsets(ka)%nodes) + state%u_next(1, mesh%nsets(ka)%nodes)) - &
-        minval(mesh%x(1, mesh%nsets(kb)%nodes) + state%u_next(1, mesh%nsets(kb)%nodes)))
-      in_contact = pairs(1)%nactive > 0
-      if (in_contact .and. t_first < 0.0_wp) t_first = state%time
-      if (in_contact) t_last = state%time
-      bal_max = max(bal_max, abs(state%energy%balance)/state%energy%scale)
-      wc_min = min(wc_min, state%energy%contact)
-      if (state%step == state%nsteps) exit
-      call advance_state(state)
-    end do
-    call check(failure, .not. err%failed(), 'contact step failed')
-    if (allocated(failure)) return
-    p_total = sum(model%mass*state%v_mid(1, :))
-    p_a = sum(model%mass(a_nodes)*state%v_mid(1, a_nodes))
-    write(*, '(a,es10.3,a,f8.4,a,es10.3,a,f8.5,a,es10.3,a,es10.3)') '        penetration max/L ', pen_max/lx, &
-      ', duration c/(2L) ', (t_last - t_first)*c/(2.0_wp*lx), ', momentum total/(M v) ', p_total/(mass_a*v), &
-      ', bar a final velocity/(-v) ', p_a/(-mass_a*v), ', contact loss/KE0 ', state%energy%contact/ke0, &
-      ', balance ', bal_max
-    call check(failure, pen_max <= 1.0e-10_wp*lx, 'penetration above round-off')
-    call check(failure, abs(p_total) <= 1.0e-9_wp*mass_a*v, 'momentum not conserved')
-    call check_close(failure, (t_last - t_first)*c/(2.0_wp*lx), 1.0_wp, 'contact duration / (2L/c)', rel_tol=0.05_wp)
-    call check_close(failure, p_a/(-mass_a*v), 1.0_wp, 'bar a leaves with -v (mean)', rel_tol=0.05_wp)
-    call check(failure, bal_max < 1.0e-10_wp, 'energy balance not exact: energy created or lost unaccounted')
-    call check(failure, wc_min >= -1.0e-12_wp*ke0, 'contact did positive work: energy gained')
-  end subroutine impact_case
 
   subroutine test_impact_matching(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    call impact_case(failure, 1, 1, MULT_P1)
+    call check_two_bar_impact(failure, METHOD_MORTAR, MULT_P1, 1, 1)
   end subroutine test_impact_matching
 
   subroutine test_impact_nonmatching(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    call impact_case(failure, 10, 7, MULT_P0)
+    call check_two_bar_impact(failure, METHOD_MORTAR, MULT_P0, 10, 7)
   end subroutine test_impact_nonmatching
 
   !> A stiff Q8 strip pressed at its centre on a block: its ends lift. The
