@@ -108,14 +108,17 @@ contains
     ! Constrained dofs: velocity that lands exactly on the prescribed value
     ! at t(n+1); the reaction is the force that turns the free velocity into
     ! it: vc = vfree + h M^-1 r / (1 + c).
+    ! The amplitude of each support at t(n+1), once per support.
     tnext = state%time + dt
+    do s = 1, size(model%supports)
+      state%support_amp(s) = 0.0_wp
+      if (model%supports(s)%driven) state%support_amp(s) = amplitude_at(model, model%supports(s)%amplitude, tnext)
+    end do
     do j = 1, model%ncdof
       i = model%cdof_node(j)
       comp = model%cdof_comp(j)
       s = model%cdof_support(j)
-      target = 0.0_wp
-      if (model%supports(s)%driven) target = model%supports(s)%value(comp)* &
-        amplitude_at(model, model%supports(s)%amplitude, tnext)
+      target = model%supports(s)%value(comp)*state%support_amp(s)
       vfree = state%v(comp, i)
       vc = (target - state%u(comp, i))/dt
       m = model%mass(i)

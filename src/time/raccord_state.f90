@@ -45,6 +45,7 @@ module raccord_state
     real(wp), allocatable :: reaction(:)    !< reaction at each constrained dof at t(n)
     real(wp), allocatable :: cdof_vold(:)   !< v(n-1/2) of each constrained dof (predictor scratch)
     real(wp), allocatable :: load_amp(:)    !< amplitude of each surface load at t(n)
+    real(wp), allocatable :: support_amp(:) !< amplitude of each driven support at t(n+1) (0 if fixed)
     type(energy_t) :: energy
   end type state_t
 
@@ -68,5 +69,6 @@ contains
     state%v_mid = model%v0
     allocate(state%reaction(model%ncdof), state%cdof_vold(model%ncdof), source=0.0_wp)
     allocate(state%load_amp(size(model%loads)), source=0.0_wp)
+    allocate(state%support_amp(size(model%supports)), source=0.0_wp)
   end subroutine init_state
 end module raccord_state
