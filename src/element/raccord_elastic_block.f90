@@ -24,6 +24,16 @@
 !> which is f = K u with K = sum_g c B^T C B (eq. 3.2). H is stored
 !> h(chunk_len, 4, ngp, nchunk); the cold data c(ngp, nel) serve mass,
 !> body force and stress recovery.
+!>
+!> Threading (OpenMP, doc/performance.md "Threading"): the chunks are
+!> coloured once at set-up (raccord_colouring) so that the chunks of one
+!> colour share no node. The internal force and the stress recovery run
+!> colour after colour, the chunks of a colour shared among the threads,
+!> each chunk gathered, computed and scattered by one thread: no two threads
+!> write the same node, and the order in which contributions add up at a
+!> node is the colour order, the same for any thread count (serial runs
+!> included), so the results are bitwise independent of the thread count.
+!> The thread count is the block's nthreads (1 unless set).
 module raccord_elastic_block
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
@@ -31,6 +41,7 @@ module raccord_elastic_block
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, nodes_per_element, element_name
   use raccord_quadrature, only: gauss_legendre
   use raccord_shape, only: shape_quad, node_natural_coords
+  use raccord_colouring, only: colour_chunks
   implicit none
   private
 
@@ -39,6 +50,10 @@ module raccord_elastic_block
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = 32
+  !> Blocks with fewer chunks run on the calling thread only (the same
+  !> colour order, so the same bits): below about 256 elements a parallel
+  !> region costs more than it saves.
+  integer, parameter :: min_parallel_chunks = 8
   integer, parameter :: max_nen = 8, max_gp = 9
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
@@ -63,9 +78,15 @@ module raccord_elastic_block
     integer, allocatable :: conn(:,:)    !< (nen, nel) global node indices
     real(wp) :: young = 0.0_wp, poisson = 0.0_wp, thickness = 1.0_wp
     logical :: plane_stress = .false.
+    !> threads of the element loops (1: serial); set_model_threads sets it
+    !> from OMP_NUM_THREADS for a model's blocks
+    integer :: nthreads = 1
     real(wp), private :: lam = 0.0_wp    !< in-plane Lame lambda (plane stress: 2 lam mu/(lam + 2 mu))
     real(wp), private :: mu = 0.0_wp     !< shear modulus
     integer, private :: nchunk = 0
+    integer, private :: ncolour = 0
+    integer, allocatable, private :: colour_ptr(:)   !< (ncolour + 1) colour c: colour_chunk(ptr(c):ptr(c+1)-1)
+    integer, allocatable, private :: colour_chunk(:) !< (nchunk) chunk indices sorted by colour
     real(wp), allocatable, private :: wts(:)         !< (ngp) Gauss weights
     real(wp), allocatable, private :: nref(:,:)      !< (nen, ngp) shape functions at the Gauss points
     real(wp), allocatable, private :: dnref(:,:,:)   !< (2, nen, ngp) natural derivatives at the Gauss points
@@ -177,6 +198,9 @@ contains
       return
     end if
     blk%conn = conn
+    call colour_chunks(blk%conn, size(x, 2), chunk_len, blk%colour_ptr, blk%colour_chunk, err)
+    if (err%failed()) return
+    blk%ncolour = size(blk%colour_ptr) - 1
 
     ! tensor Gauss rule, g = i + n1 (j - 1): xi = gx(i), eta = gx(j)
     do j = 1, n1
@@ -352,37 +376,49 @@ contains
 
   !> f(2, nnode) += K u over the block's elements (theory eq. 6.1).
   !> Gather -> chunk kernel -> scatter; no allocation (chunk buffers are
-  !> fixed-size locals).
+  !> fixed-size locals, one set per thread). Colour after colour, the chunks
+  !> of a colour shared among blk%nthreads threads; one parallel
+  !> region per call, the implicit barrier at the end of each colour's loop
+  !> keeps two colours from overlapping.
   subroutine add_internal_force(blk, u, f)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: f(:,:)
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen)
-    integer :: ic, e0, nc, i, a, node, nen
+    integer :: col, k, ic, e0, nc, i, a, node, nen
     nen = blk%nen
-    chunks: do ic = 1, blk%nchunk
-      e0 = (ic - 1)*chunk_len
-      nc = min(chunk_len, blk%nel - e0)
-      do a = 1, nen
-        do i = 1, nc
-          node = blk%conn(a, e0 + i)
-          ue(i, 1, a) = u(1, node)
-          ue(i, 2, a) = u(2, node)
+    !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
+    !$omp   default(none) shared(blk, u, f, nen) &
+    !$omp   private(col, k, ic, e0, nc, i, a, node, ue, fe)
+    colours: do col = 1, blk%ncolour
+      !$omp do schedule(static)
+      chunks: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
+        ic = blk%colour_chunk(k)
+        e0 = (ic - 1)*chunk_len
+        nc = min(chunk_len, blk%nel - e0)
+        do a = 1, nen
+          do i = 1, nc
+            node = blk%conn(a, e0 + i)
+            ue(i, 1, a) = u(1, node)
+            ue(i, 2, a) = u(2, node)
+          end do
         end do
-      end do
-      if (blk%etype == ELEM_Q4) then
-        call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
-      else
-        call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
-      end if
-      do a = 1, nen
-        do i = 1, nc
-          node = blk%conn(a, e0 + i)
-          f(1, node) = f(1, node) + fe(i, 1, a)
-          f(2, node) = f(2, node) + fe(i, 2, a)
+        if (blk%etype == ELEM_Q4) then
+          call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
+        else
+          call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
+        end if
+        do a = 1, nen
+          do i = 1, nc
+            node = blk%conn(a, e0 + i)
+            f(1, node) = f(1, node) + fe(i, 1, a)
+            f(2, node) = f(2, node) + fe(i, 2, a)
+          end do
         end do
-      end do
-    end do chunks
+      end do chunks
+      !$omp end do
+    end do colours
+    !$omp end parallel
   end subroutine add_internal_force
 
   !> fe = K_e ue for nc Q4 elements of a chunk, fully integrated K in the
@@ -653,35 +689,57 @@ contains
   !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
   !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
   !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
-  !> plane strain, 0 in plane stress.
-  pure subroutine add_nodal_stress(blk, u, s, wsum)
+  !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
+  !> colour order (the same bits for any thread count).
+  subroutine add_nodal_stress(blk, u, s, wsum)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: s(:,:), wsum(:)
-    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs
-    integer :: e, g, a, nen
-    nen = blk%nen
-    do e = 1, blk%nel
-      ue(:, 1:nen) = u(:, blk%conn(:, e))
-      do g = 1, blk%ngp
-        call scaled_gradients(blk, e, g, gr)
-        rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
-        ! grad u_ij = du_i/dx_j (theory eq. 3.1)
-        gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
-        tr = blk%lam*(gu(1, 1) + gu(2, 2))
-        sg(1, g) = tr + 2.0_wp*blk%mu*gu(1, 1)
-        sg(2, g) = tr + 2.0_wp*blk%mu*gu(2, 2)
-        sg(3, g) = blk%mu*(gu(1, 2) + gu(2, 1))
-        if (blk%plane_stress) then
-          sg(4, g) = 0.0_wp
-        else
-          sg(4, g) = blk%poisson*(sg(1, g) + sg(2, g))
-        end if
-      end do
-      do a = 1, nen
-        s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
-        wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
-      end do
-    end do
+    integer :: col, k, ic, e
+    !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
+    !$omp   default(none) shared(blk, u, s, wsum) &
+    !$omp   private(col, k, ic, e)
+    colours: do col = 1, blk%ncolour
+      !$omp do schedule(static)
+      chunks: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
+        ic = blk%colour_chunk(k)
+        do e = (ic - 1)*chunk_len + 1, min(ic*chunk_len, blk%nel)
+          call add_element_stress(blk, e, u, s, wsum)
+        end do
+      end do chunks
+      !$omp end do
+    end do colours
+    !$omp end parallel
   end subroutine add_nodal_stress
+
+  !> The nodal stress contributions of element e (add_nodal_stress).
+  pure subroutine add_element_stress(blk, e, u, s, wsum)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e
+    real(wp), intent(in) :: u(:,:)
+    real(wp), intent(inout) :: s(:,:), wsum(:)
+    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs
+    integer :: g, a, nen
+    nen = blk%nen
+    ue(:, 1:nen) = u(:, blk%conn(:, e))
+    do g = 1, blk%ngp
+      call scaled_gradients(blk, e, g, gr)
+      rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
+      ! grad u_ij = du_i/dx_j (theory eq. 3.1)
+      gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
+      tr = blk%lam*(gu(1, 1) + gu(2, 2))
+      sg(1, g) = tr + 2.0_wp*blk%mu*gu(1, 1)
+      sg(2, g) = tr + 2.0_wp*blk%mu*gu(2, 2)
+      sg(3, g) = blk%mu*(gu(1, 2) + gu(2, 1))
+      if (blk%plane_stress) then
+        sg(4, g) = 0.0_wp
+      else
+        sg(4, g) = blk%poisson*(sg(1, g) + sg(2, g))
+      end if
+    end do
+    do a = 1, nen
+      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
+      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
+    end do
+  end subroutine add_element_stress
 end module raccord_elastic_block

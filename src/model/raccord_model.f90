@@ -11,7 +11,7 @@ module raccord_model
   implicit none
   private
 
-  public :: amplitude_at
+  public :: amplitude_at, requested_threads, set_model_threads
 
   !> One deformable body: the elements of one element set, one material;
   !> one elastic block per element type present (Q4 and/or Q8).
@@ -70,6 +70,9 @@ module raccord_model
     real(wp), allocatable :: v0(:,:)                   !< (2, nnode) initial velocity
     real(wp), allocatable :: alpha(:)                  !< (nnode) mass-proportional damping [1/time], per body
     real(wp) :: w2_bound = 0.0_wp                      !< max over bodies of the element bound
+    !> Threads of the per-node loops (1: serial); set_model_threads sets it
+    !> with the blocks' count.
+    integer :: nthreads = 1
     ! Active effects: the step loop does only what is switched on here.
     logical :: has_body_force = .false.
     logical :: has_loads = .false.
@@ -90,4 +93,35 @@ contains
       a = interpolate_table(model%amplitudes(idx)%t, model%amplitudes(idx)%a, t)
     end if
   end function amplitude_at
+
+  !> Threads a run asks for: with OMP_NUM_THREADS set, the OpenMP runtime's
+  !> reading of it (its first level for a nested list); unset, 1, so that a
+  !> run, a test or one case of a sweep never takes every core unasked
+  !> (doc/performance.md, "Threading"). Always 1 in a build without OpenMP.
+  integer function requested_threads() result(n)
+    !$ use omp_lib, only: omp_get_max_threads
+    integer :: length, status
+    n = 1
+    call get_environment_variable('OMP_NUM_THREADS', length=length, status=status)
+    if (status /= 0 .or. length == 0) return
+    !$ n = max(1, omp_get_max_threads())
+  end function requested_threads
+
+  !> Run the model's loops on n threads (n < 1 counts as 1): the per-node
+  !> loops of the time step and the element loops of every block. The
+  !> results do not depend on n, bit for bit (raccord_elastic_block,
+  !> raccord_central_difference).
+  subroutine set_model_threads(model, n)
+    type(model_t), intent(inout) :: model
+    integer, intent(in) :: n
+    integer :: ib, k
+    model%nthreads = max(1, n)
+    if (.not. allocated(model%bodies)) return
+    do ib = 1, size(model%bodies)
+      if (.not. allocated(model%bodies(ib)%blocks)) cycle
+      do k = 1, size(model%bodies(ib)%blocks)
+        model%bodies(ib)%blocks(k)%nthreads = model%nthreads
+      end do
+    end do
+  end subroutine set_model_threads
 end module raccord_model

@@ -10,7 +10,7 @@ module raccord_model_build
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
   use raccord_elastic_block, only: init_elastic_block, add_lumped_mass, add_body_force, max_eigenvalue_bound
   use raccord_edge_load, only: add_edge_traction
-  use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t
+  use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t, requested_threads, set_model_threads
   implicit none
   private
 
@@ -35,6 +35,9 @@ contains
     call build_boundaries(scene, mesh, model, elem_body, err)
     if (err%failed()) return
     model%has_damping = any(model%alpha > 0.0_wp)
+    call set_model_threads(model, requested_threads())
+    if (model%nthreads > 1) call log_info('build_model', 'threads: ' // str(model%nthreads) // &
+      ' (OMP_NUM_THREADS)')
   end subroutine build_model
 
   subroutine copy_amplitudes(scene, model)

@@ -13,6 +13,13 @@
 !> Contact (forward-increment Lagrange multipliers) enters between the
 !> predictor (CD-1, CD-2 without contact forces) and `advance_state`, by
 !> correcting u_next and v (method brief, section 3).
+!>
+!> Threading (OpenMP, doc/performance.md "Threading"): the per-node loops
+!> run over nseg fixed node segments shared among the threads; each energy
+!> sum is formed per segment and the nseg partial sums are added in segment
+!> order, on model%nthreads threads. The segments depend on the node count only, so the energies, like
+!> the forces (raccord_elastic_block), are bitwise the same for any thread
+!> count. The constrained dofs, the loads and contact stay serial.
 module raccord_central_difference
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t, amplitude_at
@@ -23,15 +30,40 @@ module raccord_central_difference
 
   public :: compute_forces, predict_motion, update_energy, advance_state
 
+  !> Fixed node segments of the per-node loops (independent of the thread
+  !> count, so that the partial sums are too).
+  integer, parameter :: nseg = 64
+  !> Models with fewer nodes run the per-node loops on the calling thread
+  !> (the same segments, so the same bits).
+  integer, parameter :: min_parallel_nodes = 1024
+
 contains
+
+  !> First node of segment s of nnode nodes.
+  pure integer function seg_first(s, nnode)
+    integer, intent(in) :: s, nnode
+    seg_first = int(int(s - 1, i8)*int(nnode, i8)/int(nseg, i8)) + 1
+  end function seg_first
+
+  !> Last node of segment s of nnode nodes.
+  pure integer function seg_last(s, nnode)
+    integer, intent(in) :: s, nnode
+    seg_last = int(int(s, i8)*int(nnode, i8)/int(nseg, i8))
+  end function seg_last
 
   !> Internal force K u(n) over every block, applied force at t(n).
   subroutine compute_forces(model, state)
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
-    integer :: ib, k, l
+    integer :: ib, k, l, s
 
-    state%f_int = 0.0_wp
+    !$omp parallel do if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) &
+    !$omp   num_threads(model%nthreads) schedule(static) default(none) &
+    !$omp   shared(model, state) private(s)
+    do s = 1, nseg
+      state%f_int(:, seg_first(s, model%nnode):seg_last(s, model%nnode)) = 0.0_wp
+    end do
+    !$omp end parallel do
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
         call add_internal_force(model%bodies(ib)%blocks(k), state%u, state%f_int)
@@ -61,29 +93,85 @@ contains
 
   !> Predictor (CD-1, CD-2) for free degrees of freedom, prescribed motion
   !> and reactions on the constrained ones, kinetic and internal energy at
-  !> t(n) and the damping dissipation of the step, all in one pass.
+  !> t(n) and the damping dissipation of the step. One parallel region:
+  !> the free nodes by segments, the constrained dofs on one thread, then
+  !> the damping sum by segments.
   subroutine predict_motion(model, state)
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
-    real(wp) :: h, c, dt, ke, ie, kh, cross, vold(2), vnew(2), vm(2), tnext, target, vfree, vc, vm_c, m
-    integer :: i, j, comp, s
+    real(wp) :: part(4, nseg), dpart(nseg), sums(4), h, dt
+    integer :: j, s
     logical :: first
 
     dt = state%dt
     first = state%step == 0
     h = dt
     if (first) h = 0.5_wp*dt
-    ke = 0.0_wp
-    ie = 0.0_wp
-    kh = 0.0_wp
-    cross = 0.0_wp
+    part = 0.0_wp
+    dpart = 0.0_wp
+    sums = 0.0_wp
 
     ! Remember the old velocity of constrained dofs for their reactions.
     do j = 1, model%ncdof
       state%cdof_vold(j) = state%v(model%cdof_comp(j), model%cdof_node(j))
     end do
 
-    do i = 1, model%nnode
+    !$omp parallel if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) &
+    !$omp   num_threads(model%nthreads) default(none) &
+    !$omp   shared(model, state, part, dpart, sums, h, dt, first) private(s)
+    !$omp do schedule(static)
+    free_nodes: do s = 1, nseg
+      call predict_nodes(model, state, h, dt, first, seg_first(s, model%nnode), seg_last(s, model%nnode), &
+        part(:, s))
+    end do free_nodes
+    !$omp end do
+    !$omp single
+    do s = 1, nseg
+      sums = sums + part(:, s)
+    end do
+    call predict_constrained(model, state, h, dt, first, sums)
+    !$omp end single
+    if (model%has_damping) then
+      !$omp do schedule(static)
+      damped_nodes: do s = 1, nseg
+        dpart(s) = damping_power(model, state, first, seg_first(s, model%nnode), seg_last(s, model%nnode))
+      end do damped_nodes
+      !$omp end do
+    end if
+    !$omp end parallel
+
+    associate (ke => sums(1), ie => sums(2), kh => sums(3), cross => sums(4))
+      state%energy%kinetic = 0.5_wp*ke
+      state%energy%internal = 0.5_wp*ie
+      ! (E-1); a contact correction of u(n+1) and v(n+1/2) must update it at
+      ! the nodes it moves.
+      state%energy%discrete = 0.5_wp*(kh + cross)
+    end associate
+    if (model%has_damping) then
+      ! Dissipation of the semi-implicit damping term over the step:
+      ! alpha h v' M v with v the mean of the two half-step velocities
+      ! (on the first half step, of v(0) and v(1/2)).
+      state%energy%damping = state%energy%damping + h*sum_in_order(dpart)
+    end if
+  end subroutine predict_motion
+
+  !> (CD-1), (CD-2) at the nodes i0..i1 as if free, with the semi-implicit
+  !> damping; part = this segment's sums of m v(n)^2, u(n)' f_int,
+  !> m v(n+1/2)^2 and u(n+1)' f_int.
+  subroutine predict_nodes(model, state, h, dt, first, i0, i1, part)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    real(wp), intent(in) :: h, dt
+    logical, intent(in) :: first
+    integer, intent(in) :: i0, i1
+    real(wp), intent(out) :: part(4)
+    real(wp) :: c, ke, ie, kh, cross, vold(2), vnew(2), vm(2)
+    integer :: i
+    ke = 0.0_wp
+    ie = 0.0_wp
+    kh = 0.0_wp
+    cross = 0.0_wp
+    do i = i0, i1
       vold = state%v(:, i)
       if (model%has_damping) then
         c = 0.5_wp*model%alpha(i)*h
@@ -104,10 +192,22 @@ contains
       kh = kh + model%mass(i)*(vnew(1)**2 + vnew(2)**2)
       cross = cross + state%u_next(1, i)*state%f_int(1, i) + state%u_next(2, i)*state%f_int(2, i)
     end do
+    part = [ke, ie, kh, cross]
+  end subroutine predict_nodes
 
-    ! Constrained dofs: velocity that lands exactly on the prescribed value
-    ! at t(n+1); the reaction is the force that turns the free velocity into
-    ! it: vc = vfree + h M^-1 r / (1 + c).
+  !> Constrained dofs: velocity that lands exactly on the prescribed value
+  !> at t(n+1); the reaction is the force that turns the free velocity into
+  !> it: vc = vfree + h M^-1 r / (1 + c). sums (as predict_nodes) are
+  !> corrected for the change at these dofs.
+  subroutine predict_constrained(model, state, h, dt, first, sums)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    real(wp), intent(in) :: h, dt
+    logical, intent(in) :: first
+    real(wp), intent(inout) :: sums(4)
+    real(wp) :: c, tnext, target, vfree, vc, vm_c, m
+    integer :: i, j, comp, s
+
     ! The amplitude of each support at t(n+1), once per support.
     tnext = state%time + dt
     do s = 1, size(model%supports)
@@ -128,37 +228,45 @@ contains
       else
         vm_c = 0.5_wp*(state%cdof_vold(j) + vc)
       end if
-      ke = ke + m*(vm_c**2 - state%v_mid(comp, i)**2)
-      kh = kh + m*(vc**2 - vfree**2)
-      cross = cross + (target - state%u_next(comp, i))*state%f_int(comp, i)
+      sums(1) = sums(1) + m*(vm_c**2 - state%v_mid(comp, i)**2)
+      sums(3) = sums(3) + m*(vc**2 - vfree**2)
+      sums(4) = sums(4) + (target - state%u_next(comp, i))*state%f_int(comp, i)
       state%reaction(j) = m*(1.0_wp + c)*(vc - vfree)/h
       state%v(comp, i) = vc
       state%v_mid(comp, i) = vm_c
       state%u_next(comp, i) = target
     end do
+  end subroutine predict_constrained
 
-    state%energy%kinetic = 0.5_wp*ke
-    state%energy%internal = 0.5_wp*ie
-    ! (E-1); a contact correction of u(n+1) and v(n+1/2) must update it at
-    ! the nodes it moves.
-    state%energy%discrete = 0.5_wp*(kh + cross)
-    if (model%has_damping) then
-      ! Dissipation of the semi-implicit damping term over the step:
-      ! alpha h v' M v with v the mean of the two half-step velocities
-      ! (on the first half step, of v(0) and v(1/2)).
-      ke = 0.0_wp
-      if (first) then
-        do i = 1, model%nnode
-          ke = ke + model%alpha(i)*model%mass(i)*(0.25_wp*sum((model%v0(:, i) + state%v(:, i))**2))
-        end do
-      else
-        do i = 1, model%nnode
-          ke = ke + model%alpha(i)*model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
-        end do
-      end if
-      state%energy%damping = state%energy%damping + h*ke
+  !> sum alpha m |v|^2 over the nodes i0..i1, v the mean of the two
+  !> half-step velocities (on the first half step, of v(0) and v(1/2)).
+  pure real(wp) function damping_power(model, state, first, i0, i1) result(p)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    logical, intent(in) :: first
+    integer, intent(in) :: i0, i1
+    integer :: i
+    p = 0.0_wp
+    if (first) then
+      do i = i0, i1
+        p = p + model%alpha(i)*model%mass(i)*(0.25_wp*sum((model%v0(:, i) + state%v(:, i))**2))
+      end do
+    else
+      do i = i0, i1
+        p = p + model%alpha(i)*model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
+      end do
     end if
-  end subroutine predict_motion
+  end function damping_power
+
+  !> Sum of the partial sums in index order (fixed, whatever the threads).
+  pure real(wp) function sum_in_order(part) result(total)
+    real(wp), intent(in) :: part(:)
+    integer :: k
+    total = 0.0_wp
+    do k = 1, size(part)
+      total = total + part(k)
+    end do
+  end function sum_in_order
 
   !> External work (E-2) of the forces at t(n) on the loaded and constrained
   !> dofs only, and the energy balance. The first step is a half step from
@@ -166,8 +274,8 @@ contains
   subroutine update_energy(model, state)
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
-    real(wp) :: w, wl
-    integer :: j, i, comp, l, k, n
+    real(wp) :: w, wl, wpart(nseg)
+    integer :: j, i, comp, l, k, n, s
 
     w = 0.0_wp
     do j = 1, model%ncdof
@@ -185,9 +293,19 @@ contains
       w = w + state%load_amp(l)*wl
     end do
     if (model%has_body_force) then
-      do n = 1, model%nnode
-        w = w + model%f_body(1, n)*increment(state, model, 1, n) + model%f_body(2, n)*increment(state, model, 2, n)
+      ! every node carries body force: by segments, as in predict_motion
+      !$omp parallel do if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) &
+    !$omp   num_threads(model%nthreads) schedule(static) default(none) &
+      !$omp   shared(model, state, wpart) private(s, n)
+      do s = 1, nseg
+        wpart(s) = 0.0_wp
+        do n = seg_first(s, model%nnode), seg_last(s, model%nnode)
+          wpart(s) = wpart(s) + model%f_body(1, n)*increment(state, model, 1, n) + &
+            model%f_body(2, n)*increment(state, model, 2, n)
+        end do
       end do
+      !$omp end parallel do
+      w = w + sum_in_order(wpart)
     end if
     associate (e => state%energy)
       e%external = e%external + w
