@@ -1,0 +1,183 @@
+!> Threaded runs against the serial run (doc/performance.md, "Threading").
+!> The design makes them bitwise equal: the element loops add up at each
+!> node in colour order and the per-node sums over fixed node segments
+!> (raccord_elastic_block, raccord_central_difference), neither of which
+!> depends on the thread count, and contact is serial. So the check is
+!> equality of every bit, not a tolerance: displacements, velocities,
+!> internal forces, contact multipliers, every energy at every step, and
+!> the recovered nodal stresses, after 300 steps on 1, 2 and 3 threads
+!> (3: an odd count, so that uneven shares of chunks and segments are met).
+!> Two scenes with contact, friction, damping, a body force and a support:
+!> Q4 with node-to-segment, Q8 with mortar, each with more than 1024 nodes
+!> and a body of more than 256 elements, so that both the element and the
+!> per-node loops run threaded (the thresholds below which they run serial).
+program test_parallel
+  use raccord_kinds, only: wp
+  use raccord_check, only: failure_t, new_test, run_tests, check
+  use raccord_error, only: error_t
+  use raccord_strings, only: str
+  use raccord_mesh, only: mesh_t, ELEM_Q4, ELEM_Q8
+  use raccord_scene, only: scene_t, BC_FIXED, BC_PRESSURE, METHOD_NTS, METHOD_MORTAR
+  use raccord_model, only: model_t, set_model_threads
+  use raccord_time_step, only: time_plan_t
+  use raccord_state, only: state_t
+  use raccord_central_difference, only: advance_state
+  use raccord_contact_pair, only: contact_pair_t
+  use raccord_elastic_block, only: add_nodal_stress
+  use raccord_test_meshes, only: rect_mesh
+  use dynamics_support, only: add_bc, add_pair, contact_step, two_body_scene, prepare_contact
+  implicit none
+
+  integer, parameter :: nsteps = 300, nhist = 8
+  real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp
+
+  !> What a run leaves to compare.
+  type :: run_record_t
+    real(wp), allocatable :: u(:,:), v(:,:), f_int(:,:), stress(:,:), lam_n(:), lam_t(:)
+    real(wp) :: hist(nhist, nsteps) = 0.0_wp        !< energies at every step
+    integer :: nactive = 0, nslip = 0, nthreads_env = 0
+  end type run_record_t
+
+  call run_tests('parallel', [ &
+    new_test('OMP_NUM_THREADS reaches the model (the suite asks for 3)', test_environment), &
+    new_test('Q4, node-to-segment, mu = 0.3: 2 and 3 threads bitwise equal to 1', test_q4_nts), &
+    new_test('Q8, mortar, mu = 0.3: 2 and 3 threads bitwise equal to 1', test_q8_mortar)])
+
+contains
+
+  !> Block b (element set b_body) pressed (pressure on its top) and thrown
+  !> down and sideways onto block a, which is clamped at its bottom and
+  !> damped; a gravity-like body force on b; 300 steps on nthreads threads.
+  subroutine run_scene(etype, method, na, nb, nthreads, rec, err)
+    integer, intent(in) :: etype, method, na(2), nb(2), nthreads
+    type(run_record_t), intent(out) :: rec
+    type(error_t), intent(inout) :: err
+    type(mesh_t) :: ma, mb, mesh
+    type(scene_t) :: scene
+    type(model_t) :: model
+    type(contact_pair_t), allocatable :: pairs(:)
+    type(time_plan_t) :: plan
+    type(state_t) :: state
+    integer :: k, ib, kb
+
+    call rect_mesh(ma, etype, na(1), na(2), 2.0_wp, 0.5_wp)
+    call rect_mesh(mb, etype, nb(1), nb(2), 1.0_wp, 0.5_wp, x0=0.5_wp, y0=0.5_wp, distortion=0.1_wp)
+    call two_body_scene(ma, mb, mesh, scene, e, nu, rho, .false., 1.0_wp)
+    scene%bodies(1)%damping = 2000.0_wp
+    scene%bodies(2)%damping = 0.0_wp
+    scene%bodies(2)%velocity = [3.0_wp, -6.0_wp]
+    call add_bc(scene, 'b_top', BC_PRESSURE, pressure=1.0_wp)
+    scene%bodies(2)%body_force = [0.0_wp, -2.0e-3_wp]
+    call add_bc(scene, 'a_bottom', BC_FIXED, comp=[.true., .true.])
+    call add_pair(scene, 'b_bottom', 'a_top', method, 0.3_wp)
+    call prepare_contact(scene, mesh, model, pairs, plan, state, err)
+    if (err%failed()) return
+    rec%nthreads_env = model%nthreads
+    call set_model_threads(model, nthreads)
+    steps: do k = 1, nsteps
+      call contact_step(model, pairs, state, err)
+      if (err%failed()) return
+      associate (en => state%energy)
+        rec%hist(:, k) = [en%kinetic, en%internal, en%discrete, en%external, en%damping, en%contact, &
+          en%friction, en%balance]
+      end associate
+      if (k < nsteps) call advance_state(state)
+    end do steps
+    rec%u = state%u
+    rec%v = state%v
+    rec%f_int = state%f_int
+    rec%lam_n = pairs(1)%lam_n
+    rec%lam_t = pairs(1)%lam_t
+    rec%nactive = pairs(1)%nactive
+    rec%nslip = pairs(1)%nslip
+    allocate(rec%stress(4, model%nnode), source=0.0_wp)
+    block
+      real(wp) :: wsum(model%nnode)
+      wsum = 0.0_wp
+      do ib = 1, size(model%bodies)
+        do kb = 1, size(model%bodies(ib)%blocks)
+          call add_nodal_stress(model%bodies(ib)%blocks(kb), state%u, rec%stress, wsum)
+        end do
+      end do
+    end block
+  end subroutine run_scene
+
+  !> Bitwise comparison of run rec with the serial reference ref.
+  subroutine compare(failure, what, rec, ref)
+    type(failure_t), allocatable, intent(inout) :: failure
+    character(len=*), intent(in) :: what
+    type(run_record_t), intent(in) :: rec, ref
+    call check(failure, all(rec%u == ref%u), what // ': displacements differ in ' // &
+      str(count(rec%u /= ref%u)) // ' components, by up to ' // str(maxval(abs(rec%u - ref%u))))
+    call check(failure, all(rec%v == ref%v), what // ': velocities differ in ' // str(count(rec%v /= ref%v)) // &
+      ' components')
+    call check(failure, all(rec%f_int == ref%f_int), what // ': internal forces differ in ' // &
+      str(count(rec%f_int /= ref%f_int)) // ' components')
+    call check(failure, all(rec%lam_n == ref%lam_n) .and. all(rec%lam_t == ref%lam_t), &
+      what // ': contact multipliers differ')
+    call check(failure, all(rec%hist == ref%hist), what // ': energies differ at ' // &
+      str(count(rec%hist /= ref%hist)) // ' of ' // str(size(ref%hist)) // ' (step, term) entries')
+    call check(failure, all(rec%stress == ref%stress), what // ': nodal stresses differ in ' // &
+      str(count(rec%stress /= ref%stress)) // ' components')
+  end subroutine compare
+
+  subroutine threads_case(failure, etype, method, na, nb)
+    type(failure_t), allocatable, intent(out) :: failure
+    integer, intent(in) :: etype, method, na(2), nb(2)
+    type(run_record_t) :: ref, rec
+    type(error_t) :: err
+    real(wp) :: scale
+    integer :: nt
+    call run_scene(etype, method, na, nb, 1, ref, err)
+    call check(failure, .not. err%failed(), 'serial run failed: ' // err%message)
+    if (allocated(failure)) return
+    ! the scene must exercise what is compared: contact, friction, damping
+    call check(failure, ref%nactive > 0, 'no active contact node at the end')
+    call check(failure, ref%hist(7, nsteps) > 0.0_wp, 'no friction dissipation')
+    call check(failure, ref%hist(5, nsteps) > 0.0_wp, 'no damping dissipation')
+    ! a sane serial run (the balance itself is checked by the contact suites)
+    scale = maxval(abs(ref%hist(1:7, :)))
+    call check(failure, abs(ref%hist(8, nsteps)) <= 1.0e-2_wp*scale, &
+      'serial energy balance ' // str(ref%hist(8, nsteps)) // ' of a scale ' // str(scale))
+    if (allocated(failure)) return
+    print '(a, i0, a, i0, a, es10.3, a, es10.3, a)', '  serial: ', ref%nactive, ' active, ', ref%nslip, &
+      ' slipping; friction work ', ref%hist(7, nsteps), ', energy balance ', ref%hist(8, nsteps)/scale, &
+      ' of the largest energy'
+    do nt = 2, 3
+      call run_scene(etype, method, na, nb, nt, rec, err)
+      call check(failure, .not. err%failed(), str(nt) // ' threads: run failed: ' // err%message)
+      if (allocated(failure)) return
+      call compare(failure, str(nt) // ' threads', rec, ref)
+    end do
+  end subroutine threads_case
+
+  subroutine test_q4_nts(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    ! a: 48 x 16 (768 elements), b: 25 x 12 (300); 1158 nodes in all
+    call threads_case(failure, ELEM_Q4, METHOD_NTS, [48, 16], [25, 12])
+  end subroutine test_q4_nts
+
+  subroutine test_q8_mortar(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    ! a: 36 x 8 (288 elements), b: 17 x 6 (102); 1306 nodes in all
+    call threads_case(failure, ELEM_Q8, METHOD_MORTAR, [36, 8], [17, 6])
+  end subroutine test_q8_mortar
+
+  !> The suite runs with OMP_NUM_THREADS=3 (tests/parallel/CMakeLists.txt):
+  !> build_model must take it (1 in a build without OpenMP).
+  subroutine test_environment(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(run_record_t) :: rec
+    type(error_t) :: err
+    integer :: expected, length, status
+    call get_environment_variable('OMP_NUM_THREADS', length=length, status=status)
+    call check(failure, status == 0 .and. length > 0, 'OMP_NUM_THREADS is not set for this suite')
+    if (allocated(failure)) return
+    expected = 1
+    !$ expected = 3
+    call run_scene(ELEM_Q4, METHOD_NTS, [4, 2], [2, 2], 1, rec, err)
+    call check(failure, .not. err%failed(), 'run failed')
+    call check(failure, rec%nthreads_env == expected, 'model threads ' // str(rec%nthreads_env) // &
+      ', expected ' // str(expected))
+  end subroutine test_environment
+end program test_parallel
