@@ -1,64 +1,76 @@
 !> raccord_bench: timings of the explicit time step on in-memory structured
 !> meshes (doc/performance.md).
 !>
-!>   raccord_bench [--type q4|q8|all] [--min-time SECONDS] [--repeat N] [NEL ...]
+!>   raccord_bench [--type q4|q8|all] [--threads T] [--min-time SECONDS] [--repeat N] [NEL ...]
 !>
 !> NEL are element counts (1e4, 100000, ...; default 1e4 1e5 1e6), rounded to
-!> a square nx x nx mesh. Each case runs two phases:
+!> a square nx x nx mesh. Each case runs two phases, each on 1 thread and
+!> then on T threads (default: OMP_NUM_THREADS if set, else every core the
+!> OpenMP runtime sees; T = 1: serial only):
 !>   1. kernel: add_internal_force alone on one elastic block;
 !>   2. step: a clamped plate model (build_model) marched with the time loop
 !>      of the program: compute_forces, predict_motion, update_energy,
 !>      advance_state (raccord_central_difference).
-!> Each timing is repeated N times (each at least SECONDS long); the line
-!> gives the min and the median in ns per element per call / step, the
-!> step's split into forces / predictor / rest (medians), the peak memory
-!> (VmHWM) of each phase and the relative energy balance after the steps.
+!> Each timing is repeated N times (each at least SECONDS long); a line per
+!> thread count gives the min and the median in ns per element per call /
+!> step, the step's split into forces / predictor / rest (medians), the
+!> speed-up of the medians over 1 thread, the peak memory (VmHWM) of each
+!> phase and the relative energy balance after the steps. The header gives
+!> the load average, for the speed-up is only meaningful on a quiet machine.
 program raccord_bench
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, element_name
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force
-  use raccord_model, only: model_t
+  use raccord_model, only: model_t, set_model_threads
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_bench_util, only: structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, &
-    median
+    median, load_average
+  !$ use omp_lib, only: omp_get_num_procs
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   implicit none
 
   integer, parameter :: max_sizes = 16, max_repeat = 99
-  integer :: nsizes, ntypes, types(2), it, is, stat, nrep
+  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads
   integer(i8) :: sizes(max_sizes)
   real(wp) :: min_time
 
-  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, stat)
+  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, stat)
   if (stat /= 0) error stop 1
 
-  write(output_unit, '(a)') '# raccord_bench: one core; ns per element per call (kernel) / per step (step),'
+  write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
   write(output_unit, '(a, i0, a)') '# min and median of ', nrep, ' repetitions; step split: forces / predictor / rest'
-  write(output_unit, '(a4, a9, a9, a7, 4a9, 3a8, 2a9, a7, a10)') 'type', 'elements', 'nodes', 'steps', &
-    'kern_min', 'kern_med', 'step_min', 'step_med', 'forces', 'predict', 'rest', 'MiB_kern', 'MiB_step', &
-    'B/elem', 'balance'
+  write(output_unit, '(a, i0, a)') '# threads: 1 and ', nthreads, ' (OpenMP; element chunks of 32 in colour order,' // &
+    ' per-node loops in 64 fixed segments); spd = median(1 thread)/median(this line)'
+  write(output_unit, '(a)') '# load average (1, 5, 15 min) at start: ' // load_average()
+  write(output_unit, '(a4, a9, a9, a4, a7, 4a9, 3a8, 2a6, 2a9, a7, a10)') 'type', 'elements', 'nodes', 'thr', &
+    'steps', 'kern_min', 'kern_med', 'step_min', 'step_med', 'forces', 'predict', 'rest', 'spd_k', 'spd_s', &
+    'MiB_kern', 'MiB_step', 'B/elem', 'balance'
   cases: do it = 1, ntypes
     do is = 1, nsizes
-      call run_case(types(it), sizes(is), min_time, nrep)
+      call run_case(types(it), sizes(is), min_time, nrep, nthreads)
     end do
   end do cases
+  write(output_unit, '(a)') '# load average (1, 5, 15 min) at end: ' // load_average()
 
 contains
 
   subroutine usage()
-    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--min-time SECONDS] [--repeat N] [NEL ...]'
+    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--threads T] [--min-time SECONDS] ' // &
+      '[--repeat N] [NEL ...]'
     write(output_unit, '(a)') '  NEL: element counts (default 1e4 1e5 1e6), each rounded to a square mesh'
+    write(output_unit, '(a)') '  --threads: the thread count compared with 1 (default OMP_NUM_THREADS if set, ' // &
+      'else the cores)'
     write(output_unit, '(a)') '  --min-time: least duration of one timing (default 0.3 s); --repeat: timings (default 5)'
   end subroutine usage
 
-  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, stat)
-    integer, intent(out) :: types(2), ntypes, nsizes, nrep, stat
+  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, stat)
+    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, stat
     integer(i8), intent(out) :: sizes(:)
     real(wp), intent(out) :: min_time
     character(len=64) :: arg
-    integer :: k, nargs, ios
+    integer :: k, nargs, ios, length, env_stat
     real(wp) :: v
     types = [ELEM_Q4, ELEM_Q8]
     ntypes = 2
@@ -66,6 +78,13 @@ contains
     min_time = 0.3_wp
     nrep = 5
     stat = 0
+    nthreads = 1
+    !$ nthreads = omp_get_num_procs()
+    call get_environment_variable('OMP_NUM_THREADS', arg, length=length, status=env_stat)
+    if (env_stat == 0 .and. length > 0) then
+      read(arg, *, iostat=ios) k
+      if (ios == 0 .and. k >= 1) nthreads = k
+    end if
     nargs = command_argument_count()
     k = 0
     do while (k < nargs)
@@ -97,6 +116,15 @@ contains
           stat = 1
           return
         end if
+      case ('--threads')
+        k = k + 1
+        call get_command_argument(k, arg)
+        read(arg, *, iostat=ios) nthreads
+        if (ios /= 0 .or. nthreads < 1) then
+          write(error_unit, '(a)') 'raccord_bench: --threads takes a positive integer, got "' // trim(arg) // '"'
+          stat = 1
+          return
+        end if
       case ('--repeat')
         k = k + 1
         call get_command_argument(k, arg)
@@ -125,9 +153,10 @@ contains
   end subroutine parse_command_line
 
   !> One case: the mesh, the kernel phase on a block, then the step phase
-  !> on a model built from the same mesh; one output line.
-  subroutine run_case(etype, nel_wanted, min_time, nrep)
-    integer, intent(in) :: etype, nrep
+  !> on a model built from the same mesh, each on 1 and nthreads threads;
+  !> one output line per thread count.
+  subroutine run_case(etype, nel_wanted, min_time, nrep, nthreads)
+    integer, intent(in) :: etype, nrep, nthreads
     integer(i8), intent(in) :: nel_wanted
     real(wp), intent(in) :: min_time
     type(elastic_block_t), allocatable :: blk
@@ -135,10 +164,13 @@ contains
     type(error_t) :: err
     real(wp), allocatable :: x(:,:)
     integer, allocatable :: conn(:,:)
-    integer :: nx, stat, nel, nnode
-    integer(i8) :: steps
-    real(wp) :: kern(max_repeat), step(max_repeat), split(3, max_repeat), mem_kern, mem_step, balance
+    integer :: nx, stat, nel, nnode, nthr(2), nt, k
+    integer(i8) :: steps(2)
+    real(wp) :: kern(max_repeat, 2), step(max_repeat, 2), split(3, max_repeat, 2), mem_kern, mem_step, balance(2)
 
+    nthr = [1, nthreads]
+    nt = 2
+    if (nthreads == 1) nt = 1
     call reset_peak_memory()
     nx = max(1, nint(sqrt(real(nel_wanted, wp))))
     call structured_mesh(etype, nx, nx, x, conn, stat)
@@ -156,7 +188,10 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    call bench_internal_force(blk, x, min_time, nrep, kern)
+    do k = 1, nt
+      blk%nthreads = nthr(k)
+      call bench_internal_force(blk, x, min_time, nrep, kern(:, k))
+    end do
     mem_kern = real(peak_memory_kib(), wp)/1024.0_wp
     deallocate(blk)
 
@@ -167,13 +202,20 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    call bench_step(model, min_time, nrep, steps, step, split, balance)
+    do k = 1, nt
+      call set_model_threads(model, nthr(k))
+      call bench_step(model, min_time, nrep, steps(k), step(:, k), split(:, :, k), balance(k))
+    end do
     mem_step = real(peak_memory_kib(), wp)/1024.0_wp
 
-    write(output_unit, '(a4, i9, i9, i7, 4f9.1, 3f8.1, 2f9.1, f7.0, es10.1)') element_name(etype), nel, &
-      nnode, steps, minval(kern(1:nrep)), median(kern(1:nrep)), minval(step(1:nrep)), median(step(1:nrep)), &
-      median(split(1, 1:nrep)), median(split(2, 1:nrep)), median(split(3, 1:nrep)), mem_kern, mem_step, &
-      mem_kern*1048576.0_wp/real(nel, wp), balance
+    do k = 1, nt
+      write(output_unit, '(a4, i9, i9, i4, i7, 4f9.1, 3f8.1, 2f6.2, 2f9.1, f7.0, es10.1)') element_name(etype), &
+        nel, nnode, nthr(k), steps(k), minval(kern(1:nrep, k)), median(kern(1:nrep, k)), &
+        minval(step(1:nrep, k)), median(step(1:nrep, k)), median(split(1, 1:nrep, k)), &
+        median(split(2, 1:nrep, k)), median(split(3, 1:nrep, k)), &
+        median(kern(1:nrep, 1))/median(kern(1:nrep, k)), median(step(1:nrep, 1))/median(step(1:nrep, k)), &
+        mem_kern, mem_step, mem_kern*1048576.0_wp/real(nel, wp), balance(k)
+    end do
     flush(output_unit)
   end subroutine run_case
 

@@ -3,6 +3,9 @@
 !> number of steps; prints the search-and-matching and multiplier-solve time
 !> per contact node per step, and the whole step per element, for each
 !> method and friction setting. Not a test: figures for doc/performance.md.
+!> Contact stays serial; the column contact% is its share of the step (the
+!> serial fraction s of Amdahl's law, bounding the speed-up on T threads by
+!> 1/(s + (1 - s)/T)). Threads: OMP_NUM_THREADS, as for a run (column thr).
 !>
 !>   raccord_bench_contact [steps] [n1 n2 ...]     (n = slave nodes wanted)
 program raccord_bench_contact
@@ -39,7 +42,7 @@ program raccord_bench_contact
     end do
   end if
   write(*, '(a)') '# method          mu   slave_nodes  elements  steps  search_ns/node/step  solve_ns/node/step' // &
-    '  iterations/step  step_ns/element'
+    '  iterations/step  step_ns/element  contact%  thr'
   do k = 1, nsizes
     call run_case(METHOD_NTS, 0.0_wp, sizes(k))
     call run_case(METHOD_NTS, 0.3_wp, sizes(k))
@@ -91,10 +94,11 @@ contains
     wall = real(t1 - t0, wp)/real(rate, wp)
     tb = real(pairs(1)%clock_build, wp)/real(rate, wp)
     ts = real(pairs(1)%clock_solve, wp)/real(rate, wp)
-    write(*, '(a16,f5.2,i13,i10,i7,f21.1,f20.1,f17.2,f17.1)') trim(merge('node_to_segment', 'mortar P1      ', &
+    write(*, '(a16,f5.2,i13,i10,i7,f21.1,f20.1,f17.2,f17.1,f10.1,i5)') trim(merge('node_to_segment', 'mortar P1      ', &
       method == METHOD_NTS)), mu, nslave, model%nelem, nsteps + 1, &
       1.0e9_wp*tb/real((nsteps + 1)*nslave, wp), 1.0e9_wp*ts/real((nsteps + 1)*nslave, wp), &
-      real(pairs(1)%iterations_total, wp)/real(nsteps + 1, wp), 1.0e9_wp*wall/real((nsteps + 1)*model%nelem, wp)
+      real(pairs(1)%iterations_total, wp)/real(nsteps + 1, wp), 1.0e9_wp*wall/real((nsteps + 1)*model%nelem, wp), &
+      100.0_wp*(tb + ts)/wall, model%nthreads
   end subroutine run_case
 
   !> Steel-like strips, lower clamped at its bottom, upper pressed on its top.

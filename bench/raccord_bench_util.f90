@@ -10,7 +10,8 @@ module raccord_bench_util
   implicit none
   private
 
-  public :: structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, median
+  public :: structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, median, &
+    load_average
 
 contains
 
@@ -139,6 +140,25 @@ contains
       median = 0.5_wp*(b(n/2) + b(n/2 + 1))
     end if
   end function median
+
+  !> The load averages of /proc/loadavg ('unknown' elsewhere): a threaded
+  !> speed-up measured on a loaded machine is depressed, so say how loaded.
+  function load_average() result(s)
+    character(len=:), allocatable :: s
+    character(len=128) :: line
+    integer :: unit, ios, k
+    s = 'unknown'
+    open(newunit=unit, file='/proc/loadavg', action='read', status='old', iostat=ios)
+    if (ios /= 0) return
+    read(unit, '(a)', iostat=ios) line
+    close(unit)
+    if (ios /= 0) return
+    ! the first three fields
+    k = index(line, ' ')
+    k = k + index(line(k + 1:), ' ')
+    k = k + index(line(k + 1:), ' ')
+    s = trim(line(1:k))
+  end function load_average
 
   !> Wall-clock seconds from an arbitrary origin.
   real(wp) function wall_time()
