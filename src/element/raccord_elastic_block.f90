@@ -51,9 +51,10 @@ module raccord_elastic_block
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = 32
   !> Blocks with fewer chunks run on the calling thread only (the same
-  !> colour order, so the same bits): below about 256 elements a parallel
-  !> region costs more than it saves.
-  integer, parameter :: min_parallel_chunks = 8
+  !> colour order, so the same bits): a parallel region and the barrier
+  !> after each colour cost a few microseconds, the work of 1024 Q4
+  !> elements about 40 (doc/performance.md, "Threading").
+  integer, parameter :: min_parallel_chunks = 32
   integer, parameter :: max_nen = 8, max_gp = 9
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),

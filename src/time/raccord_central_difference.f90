@@ -35,7 +35,7 @@ module raccord_central_difference
   integer, parameter :: nseg = 64
   !> Models with fewer nodes run the per-node loops on the calling thread
   !> (the same segments, so the same bits).
-  integer, parameter :: min_parallel_nodes = 1024
+  integer, parameter :: min_parallel_nodes = 2048
 
 contains
 

@@ -8,9 +8,11 @@
 !> the recovered nodal stresses, after 300 steps on 1, 2 and 3 threads
 !> (3: an odd count, so that uneven shares of chunks and segments are met).
 !> Two scenes with contact, friction, damping, a body force and a support:
-!> Q4 with node-to-segment, Q8 with mortar, each with more than 1024 nodes
-!> and a body of more than 256 elements, so that both the element and the
-!> per-node loops run threaded (the thresholds below which they run serial).
+!> Q4 with node-to-segment, Q8 with mortar, each with more than 2048 nodes
+!> and a body of at least 1024 elements, so that both the element and the
+!> per-node loops run threaded (the thresholds below which they run serial);
+!> the smaller body stays below the element threshold (serial next to
+!> threaded).
 program test_parallel
   use raccord_kinds, only: wp
   use raccord_check, only: failure_t, new_test, run_tests, check
@@ -153,14 +155,14 @@ contains
 
   subroutine test_q4_nts(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    ! a: 48 x 16 (768 elements), b: 25 x 12 (300); 1158 nodes in all
-    call threads_case(failure, ELEM_Q4, METHOD_NTS, [48, 16], [25, 12])
+    ! a: 64 x 28 (1792 elements), b: 25 x 12 (300); 2210 nodes in all
+    call threads_case(failure, ELEM_Q4, METHOD_NTS, [64, 28], [25, 12])
   end subroutine test_q4_nts
 
   subroutine test_q8_mortar(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    ! a: 36 x 8 (288 elements), b: 17 x 6 (102); 1306 nodes in all
-    call threads_case(failure, ELEM_Q8, METHOD_MORTAR, [36, 8], [17, 6])
+    ! a: 64 x 16 (1024 elements), b: 17 x 6 (102); 3586 nodes in all
+    call threads_case(failure, ELEM_Q8, METHOD_MORTAR, [64, 16], [17, 6])
   end subroutine test_q8_mortar
 
   !> The suite runs with OMP_NUM_THREADS=3 (tests/parallel/CMakeLists.txt):
