@@ -3,7 +3,9 @@
 !>
 !> The elastic blocks process their elements in chunks of consecutive
 !> elements (raccord_elastic_block); a chunk's forces are scattered to its
-!> nodes by the thread that computed them. Two chunks may run at the same
+!> nodes by the thread that computed them. (The blocks colour groups of
+!> consecutive kernel chunks; to this module a "chunk" is any run of
+!> chunk_len consecutive elements.) Two chunks may run at the same
 !> time only if they share no node, so the chunks are coloured: chunks of
 !> one colour are pairwise node-disjoint, the colours run one after the
 !> other, and the chunks of a colour are shared among the threads.

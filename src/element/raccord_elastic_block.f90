@@ -25,14 +25,18 @@
 !> h(chunk_len, 4, ngp, nchunk); the cold data c(ngp, nel) serve mass,
 !> body force and stress recovery.
 !>
-!> Threading (OpenMP, doc/performance.md "Threading"): the chunks are
-!> coloured once at set-up (raccord_colouring) so that the chunks of one
-!> colour share no node. The internal force and the stress recovery run
-!> colour after colour, the chunks of a colour shared among the threads,
-!> each chunk gathered, computed and scattered by one thread: no two threads
-!> write the same node, and the order in which contributions add up at a
-!> node is the colour order, the same for any thread count (serial runs
-!> included), so the results are bitwise independent of the thread count.
+!> Threading (OpenMP, doc/performance.md "Threading"): consecutive chunks
+!> form groups (group_len chunks, up to 32, fixed by the element count) and
+!> the groups are coloured once at set-up (raccord_colouring) so that the
+!> groups of one colour share no node. The internal force and the stress
+!> recovery run colour after colour, the groups of a colour shared among
+!> the threads, each group's chunks gathered, computed and scattered in
+!> order by one thread: no two threads write the same node, and the order
+!> in which contributions add up at a node is the colour order, the same for
+!> any thread count (serial runs included), so the results are bitwise
+!> independent of the thread count. Groups rather than single chunks keep
+!> neighbouring chunks together in one pass (the nodes they share stay in
+!> cache) while leaving tens of groups per colour to share out.
 !> The thread count is the block's nthreads (1 unless set).
 module raccord_elastic_block
   use raccord_kinds, only: wp
@@ -55,6 +59,8 @@ module raccord_elastic_block
   !> after each colour cost a few microseconds, the work of 1024 Q4
   !> elements about 40 (doc/performance.md, "Threading").
   integer, parameter :: min_parallel_chunks = 32
+  !> Chunks per colouring group: nchunk/group_divisor, within 1..max_group.
+  integer, parameter :: max_group = 32, group_divisor = 64
   integer, parameter :: max_nen = 8, max_gp = 9
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
@@ -85,9 +91,10 @@ module raccord_elastic_block
     real(wp), private :: lam = 0.0_wp    !< in-plane Lame lambda (plane stress: 2 lam mu/(lam + 2 mu))
     real(wp), private :: mu = 0.0_wp     !< shear modulus
     integer, private :: nchunk = 0
+    integer, private :: group_len = 1                !< chunks per colouring group
     integer, private :: ncolour = 0
-    integer, allocatable, private :: colour_ptr(:)   !< (ncolour + 1) colour c: colour_chunk(ptr(c):ptr(c+1)-1)
-    integer, allocatable, private :: colour_chunk(:) !< (nchunk) chunk indices sorted by colour
+    integer, allocatable, private :: colour_ptr(:)   !< (ncolour + 1) colour c: colour_group(ptr(c):ptr(c+1)-1)
+    integer, allocatable, private :: colour_group(:) !< group indices sorted by colour
     real(wp), allocatable, private :: wts(:)         !< (ngp) Gauss weights
     real(wp), allocatable, private :: nref(:,:)      !< (nen, ngp) shape functions at the Gauss points
     real(wp), allocatable, private :: dnref(:,:,:)   !< (2, nen, ngp) natural derivatives at the Gauss points
@@ -199,7 +206,8 @@ contains
       return
     end if
     blk%conn = conn
-    call colour_chunks(blk%conn, size(x, 2), chunk_len, blk%colour_ptr, blk%colour_chunk, err)
+    blk%group_len = max(1, min(max_group, blk%nchunk/group_divisor))
+    call colour_chunks(blk%conn, size(x, 2), chunk_len*blk%group_len, blk%colour_ptr, blk%colour_group, err)
     if (err%failed()) return
     blk%ncolour = size(blk%colour_ptr) - 1
 
@@ -377,7 +385,7 @@ contains
 
   !> f(2, nnode) += K u over the block's elements (theory eq. 6.1).
   !> Gather -> chunk kernel -> scatter; no allocation (chunk buffers are
-  !> fixed-size locals, one set per thread). Colour after colour, the chunks
+  !> fixed-size locals, one set per thread). Colour after colour, the groups
   !> of a colour shared among blk%nthreads threads; one parallel
   !> region per call, the implicit barrier at the end of each colour's loop
   !> keeps two colours from overlapping.
@@ -386,37 +394,39 @@ contains
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: f(:,:)
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen)
-    integer :: col, k, ic, e0, nc, i, a, node, nen
+    integer :: col, k, grp, ic, e0, nc, i, a, node, nen
     nen = blk%nen
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, f, nen) &
-    !$omp   private(col, k, ic, e0, nc, i, a, node, ue, fe)
+    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
-      chunks: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
-        ic = blk%colour_chunk(k)
-        e0 = (ic - 1)*chunk_len
-        nc = min(chunk_len, blk%nel - e0)
-        do a = 1, nen
-          do i = 1, nc
-            node = blk%conn(a, e0 + i)
-            ue(i, 1, a) = u(1, node)
-            ue(i, 2, a) = u(2, node)
+      groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
+        grp = blk%colour_group(k)
+        chunks: do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
+          e0 = (ic - 1)*chunk_len
+          nc = min(chunk_len, blk%nel - e0)
+          do a = 1, nen
+            do i = 1, nc
+              node = blk%conn(a, e0 + i)
+              ue(i, 1, a) = u(1, node)
+              ue(i, 2, a) = u(2, node)
+            end do
           end do
-        end do
-        if (blk%etype == ELEM_Q4) then
-          call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
-        else
-          call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
-        end if
-        do a = 1, nen
-          do i = 1, nc
-            node = blk%conn(a, e0 + i)
-            f(1, node) = f(1, node) + fe(i, 1, a)
-            f(2, node) = f(2, node) + fe(i, 2, a)
+          if (blk%etype == ELEM_Q4) then
+            call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
+          else
+            call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
+          end if
+          do a = 1, nen
+            do i = 1, nc
+              node = blk%conn(a, e0 + i)
+              f(1, node) = f(1, node) + fe(i, 1, a)
+              f(2, node) = f(2, node) + fe(i, 2, a)
+            end do
           end do
-        end do
-      end do chunks
+        end do chunks
+      end do groups
       !$omp end do
     end do colours
     !$omp end parallel
@@ -696,18 +706,18 @@ contains
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: s(:,:), wsum(:)
-    integer :: col, k, ic, e
+    integer :: col, k, grp, e
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, s, wsum) &
-    !$omp   private(col, k, ic, e)
+    !$omp   private(col, k, grp, e)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
-      chunks: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
-        ic = blk%colour_chunk(k)
-        do e = (ic - 1)*chunk_len + 1, min(ic*chunk_len, blk%nel)
+      groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
+        grp = blk%colour_group(k)
+        do e = (grp - 1)*blk%group_len*chunk_len + 1, min(grp*blk%group_len*chunk_len, blk%nel)
           call add_element_stress(blk, e, u, s, wsum)
         end do
-      end do chunks
+      end do groups
       !$omp end do
     end do colours
     !$omp end parallel
