@@ -5,7 +5,7 @@
 !> depends on the thread count, and contact is serial. So the check is
 !> equality of every bit, not a tolerance: displacements, velocities,
 !> internal forces, contact multipliers, every energy at every step, and
-!> the recovered nodal stresses, after 300 steps on 1, 2 and 3 threads
+!> the recovered nodal stresses, after 100 steps on 1, 2 and 3 threads
 !> (3: an odd count, so that uneven shares of chunks and segments are met).
 !> Two scenes with contact, friction, damping, a body force and a support:
 !> Q4 with node-to-segment, Q8 with mortar, each with more than 2048 nodes
@@ -31,7 +31,7 @@ program test_parallel
   use dynamics_support, only: add_bc, add_pair, contact_step, two_body_scene, prepare_contact
   implicit none
 
-  integer, parameter :: nsteps = 300, nhist = 8
+  integer, parameter :: nsteps = 100, nhist = 8
   real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp
 
   !> What a run leaves to compare.
@@ -52,7 +52,7 @@ contains
 
   !> Block b (element set b_body) pressed (pressure on its top) and thrown
   !> down and sideways onto block a, which is clamped at its bottom and
-  !> damped; a gravity-like body force on b; 300 steps on nthreads threads.
+  !> damped; a gravity-like body force on b; 100 steps on nthreads threads.
   subroutine run_scene(etype, method, na, nb, nthreads, rec, err)
     integer, intent(in) :: etype, method, na(2), nb(2), nthreads
     type(run_record_t), intent(out) :: rec
