@@ -41,8 +41,8 @@ program raccord_bench
 
   write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
   write(output_unit, '(a, i0, a)') '# min and median of ', nrep, ' repetitions; step split: forces / predictor / rest'
-  write(output_unit, '(a, i0, a)') '# threads: 1 and ', nthreads, ' (OpenMP; colour-ordered groups of 32-element chunks,' // &
-    ' per-node loops in 64 fixed segments); spd = median(1 thread)/median(this line)'
+  write(output_unit, '(a, i0, a)') '# threads: 1 and ', nthreads, ' (OpenMP; colour-ordered groups of ' // &
+    '32-element chunks, per-node loops in 64 fixed segments); spd = median(1 thread)/median(this line)'
   write(output_unit, '(a)') '# load average (1, 5, 15 min) at start: ' // load_average()
   write(output_unit, '(a4, a9, a9, a4, a7, 4a9, 3a8, 2a6, 2a9, a7, a10)') 'type', 'elements', 'nodes', 'thr', &
     'steps', 'kern_min', 'kern_med', 'step_min', 'step_med', 'forces', 'predict', 'rest', 'spd_k', 'spd_s', &

@@ -15,11 +15,12 @@
 !> correcting u_next and v (method brief, section 3).
 !>
 !> Threading (OpenMP, doc/performance.md "Threading"): the per-node loops
-!> run over nseg fixed node segments shared among the threads; each energy
-!> sum is formed per segment and the nseg partial sums are added in segment
-!> order, on model%nthreads threads. The segments depend on the node count only, so the energies, like
-!> the forces (raccord_elastic_block), are bitwise the same for any thread
-!> count. The constrained dofs, the loads and contact stay serial.
+!> run over nseg fixed node segments shared among model%nthreads threads;
+!> each energy sum is formed per segment and the nseg partial sums are
+!> added in segment order. The segments depend on the node count only, so
+!> the energies, like the forces (raccord_elastic_block), are bitwise the
+!> same for any thread count. The constrained dofs, the loads and contact
+!> stay serial.
 module raccord_central_difference
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t, amplitude_at
