@@ -41,20 +41,26 @@ col() { # table column-name: values in level order, one per line, of elem/method
   awk -v e="$3" -v m="$4" -v name="$2" '/^#/ { for (i = 2; i <= NF; i++) if ($i == name) c = i - 1; next }
     $2 == e && $3 == m { v = $c; print (v < 0 ? -v : v) }' "$out/$1.txt"
 }
-methods_hertz="nts p1"; [ "$mode" = full ] && methods_hertz="nts p0 p1"
-elems="q4"; [ "$mode" = full ] && elems="q4 q8"
-for e in $elems; do
-  for m in $methods_hertz; do
-    for spec in "hertz err_l2" "cattaneo err_l2" "cattaneo err_l2_shear"; do
-      set -- $spec
-      [ "$1" = cattaneo ] && [ "$mode" = quick ] && [ "$m" != p1 ] && continue
+# Quick: the rates of the three coarse levels. Full: the Hertz rates over
+# every level, node-to-segment Q8 left out (its Q8 pressure does not converge:
+# doc/accuracy-cost.md section 4); Cattaneo-Mindlin there reaches its model
+# floor (traction error about 13 % from nb = 24 on), so only the quick
+# levels carry its rate.
+if [ "$mode" = full ]; then
+  specs="q4:nts:hertz:err_l2 q4:p0:hertz:err_l2 q4:p1:hertz:err_l2 q8:p0:hertz:err_l2 q8:p1:hertz:err_l2"
+else
+  specs="q4:nts:hertz:err_l2 q4:p1:hertz:err_l2 q4:p1:cattaneo:err_l2 q4:p1:cattaneo:err_l2_shear"
+fi
+for spec in $specs; do
+  e=${spec%%:*}; rest=${spec#*:}; m=${rest%%:*}; rest=${rest#*:}
+  set -- ${rest%%:*} ${rest#*:}
+  {
       r=$(rate "$1" $e $m "$2")
       if [ -z "$r" ]; then bad "$1 $e $m $2: no rate"; continue; fi
       check "$1 $e $m $2: observed rate $r >= 1 - 0.5" "$r >= 0.5"
       first=$(col "$1" "$2" $e $m | head -n 1); last=$(col "$1" "$2" $e $m | tail -n 1)
       check "$1 $e $m $2: finest $last < coarsest $first" "$last < $first"
-    done
-  done
+  }
 done
 mono=$(col hertz err_l2 q4 p1 | awk 'NR > 1 && $1 >= prev { bad = 1 } { prev = $1 } END { print bad + 0 }')
 check "hertz q4 p1 err_l2 decreases on every refinement ($(col hertz err_l2 q4 p1 | tr '\n' ' '))" "$mono == 0"
