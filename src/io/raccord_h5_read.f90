@@ -144,6 +144,7 @@ contains
     if (hdferr == 0) call h5tget_size_f(ftype, n, hdferr)
     if (hdferr == 0) call h5tclose_f(ftype, hdferr)
     if (hdferr == 0) then
+      deallocate(text)
       allocate(character(len=int(n)) :: text)
       call h5tcopy_f(H5T_NATIVE_CHARACTER, mtype, hdferr)
       if (hdferr == 0) call h5tset_size_f(mtype, n, hdferr)
@@ -176,6 +177,7 @@ contains
     call h5aget_type_f(attr, atype, hdferr)
     if (hdferr == 0) call h5tget_size_f(atype, n, hdferr)
     if (hdferr == 0) then
+      deallocate(text)
       allocate(character(len=int(n)) :: text)
       call h5aread_f(attr, atype, text, [1_hsize_t], hdferr)
       call h5tclose_f(atype, e2)

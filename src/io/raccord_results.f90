@@ -33,7 +33,7 @@ module raccord_results
   public :: results_open, results_write_mesh, results_write_node_set
   public :: results_begin_frame, results_write_nodal, results_end_frame
   public :: results_write_array, results_write_table, results_set_text, results_close
-  public :: results_suspend, results_resume, results_has, results_delete
+  public :: results_suspend, results_resume, results_has, results_delete, results_flush
 
   !> Version of the file layout, stored as the root attribute format_version;
   !> bump it when doc/output-format.md changes incompatibly.
@@ -431,6 +431,14 @@ contains
     call results_set_text(res, 'status', 'running', err)
     call flush_file(res, 'the resumed file', err)
   end subroutine results_resume
+
+  !> Flush everything written so far to disk (before a checkpoint).
+  subroutine results_flush(res, err)
+    type(results_t), intent(in) :: res
+    type(error_t), intent(inout) :: err
+    if (.not. usable(res, 'results_flush', err)) return
+    call flush_file(res, 'the results', err)
+  end subroutine results_flush
 
   !> True when an object exists at `path` in the open file.
   logical function results_has(res, path)
