@@ -55,6 +55,12 @@ contains
         call option_value(k, n, arg, 'a checkpoint: raccord --restart DIR/NAME.checkpoint.h5 [SCENE]', &
           cli%restart_path, err)
         if (err%failed()) return
+        if (index(cli%restart_path, '.checkpoint.h5', back=.true.) /= len(cli%restart_path) - 13 .or. &
+            len(cli%restart_path) <= 14) then
+          call raise_error(err, EXIT_USAGE, '--restart ' // cli%restart_path // ': give the <name>.checkpoint.h5 ' // &
+            'file a stopped run wrote')
+          return
+        end if
       case ('--wall-clock')
         call option_value(k, n, arg, 'seconds: raccord --wall-clock 3600 SCENE', value, err)
         if (err%failed()) return

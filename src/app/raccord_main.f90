@@ -14,7 +14,7 @@ program raccord_main
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, &
     EXIT_WALLCLOCK
-  use raccord_log, only: log_open, log_close, log_info, log_warn, log_error, log_raw, log_set_quiet, log_set_level, &
+  use raccord_log, only: log_open, log_close, log_info, log_warn, log_debug, log_error, log_raw, log_set_quiet, log_set_level, &
     LEVEL_DEBUG, log_unit
   use raccord_strings, only: str
   use raccord_version, only: raccord_version_string
@@ -50,7 +50,7 @@ program raccord_main
   type(run_control_t) :: control
   type(contact_pair_t), allocatable :: pairs(:)
   type(error_t) :: err
-  character(len=:), allocatable :: stem, why
+  character(len=:), allocatable :: stem, why, recorded_scene
   logical :: restart
   integer(i8) :: first_step
 
@@ -75,9 +75,10 @@ program raccord_main
   ! Phase 1: the scene deck, and the run's folder and log. A restart goes
   ! on in the checkpoint's folder, with the deck it was written for unless
   ! another is given.
-  if (restart .and. .not. allocated(cli%scene_path)) then
-    call checkpoint_scene_path(cli%restart_path, cli%scene_path, err)
+  if (restart) then
+    call checkpoint_scene_path(cli%restart_path, recorded_scene, err)   ! also checks the file
     if (err%failed()) call finish(err)
+    if (.not. allocated(cli%scene_path)) cli%scene_path = recorded_scene
   end if
   call read_scene(cli%scene_path, scene, err)
   if (err%failed()) call finish(err)
@@ -144,6 +145,8 @@ program raccord_main
   if (err%failed()) call finish(err)
   call delete_file(checkpoint_name(stem))
   call report_summary(model, state, out, pairs, first_step)
+  call log_debug('raccord', 'longest step ' // str(control%step_max, 3) // ' s, longest checkpoint write ' // &
+    str(control%write_max, 3) // ' s (' // str(control%checkpoints) // ' checkpoints)')
   call log_close()
 
 contains
@@ -154,13 +157,7 @@ contains
   subroutine place_restart()
     character(len=*), parameter :: suffix = '.checkpoint.h5'
     character(len=:), allocatable :: p, dir, name
-    p = cli%restart_path
-    if (len(p) <= len(suffix)) then
-      call raise_error(err, EXIT_USAGE, '--restart ' // p // ': give the <name>.checkpoint.h5 file a stopped run wrote')
-    else if (p(len(p)-len(suffix)+1:) /= suffix) then
-      call raise_error(err, EXIT_USAGE, '--restart ' // p // ': give the <name>.checkpoint.h5 file a stopped run wrote')
-    end if
-    if (err%failed()) call finish(err)
+    p = cli%restart_path     ! ends in suffix (parse_command_line)
     dir = path_dir(p)
     name = path_base(p(1:len(p)-len(suffix)))
     if (allocated(cli%output_dir)) then
