@@ -163,8 +163,8 @@ contains
       '  -v, --verbose   debug messages' // nl // &
       '  -V, --version   print the version' // nl // &
       '  -h, --help      this text' // nl // nl // &
-      'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh (or checkpoint), 3 numerical' // nl // &
-      '            failure, 4 file system failure, 5 stopped at the wall-clock limit or by SIGTERM or' // nl // &
-      '            SIGUSR1, checkpoint written: continue with --restart'
+      'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure,' // nl // &
+      '            4 file system failure, 5 stopped at the wall-clock limit or by SIGTERM or SIGUSR1,' // nl // &
+      '            checkpoint written: continue with --restart (a checkpoint it refuses: 2)'
   end function usage_text
 end module raccord_cli

@@ -40,6 +40,14 @@ program raccord_main
   use raccord_files, only: make_directory, file_exists, delete_file
   implicit none
 
+  interface
+    ! POSIX _exit: leave without running atexit handlers.
+    subroutine c_exit(status) bind(C, name='_exit')
+      import :: c_int
+      integer(c_int), value :: status
+    end subroutine c_exit
+  end interface
+
   type(cli_t) :: cli
   type(scene_t) :: scene
   type(mesh_t) :: mesh
@@ -248,7 +256,10 @@ contains
       str(state%time) // ': ' // reason)
     call log_info('raccord', 'continue with: raccord --restart ' // checkpoint_name(stem))
     call log_close()
-    error stop 5
+    ! Exit 5 is not an error: no ERROR STOP text or backtrace on stderr.
+    ! Every file is closed and the HDF5 library released by now.
+    flush(output_unit)
+    call c_exit(int(EXIT_WALLCLOCK, c_int))
   end subroutine stop_at_checkpoint
 
   !> Create the output folder and open the log file in it (a restart
@@ -297,13 +308,6 @@ contains
   subroutine finish(e)
     type(error_t), intent(in) :: e
     type(error_t) :: close_err
-    interface
-      ! POSIX _exit: leave without running atexit handlers.
-      subroutine c_exit(status) bind(C, name='_exit')
-        import :: c_int
-        integer(c_int), value :: status
-      end subroutine c_exit
-    end interface
     if (.not. e%failed()) return
     call close_outputs(out, .false., e%message, close_err)
     call log_error('raccord', e%message)

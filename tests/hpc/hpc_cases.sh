@@ -114,16 +114,21 @@ echo "$n" > "$out/stub.count"
 echo "run $n: $args wall=${RACCORD_WALLCLOCK_SECONDS:-none} omp=${OMP_NUM_THREADS:-none}" >> "$out/stub.log"
 code=$(echo "${STUB_EXIT:-0}" | awk -v n="$n" '{ print (n <= NF ? $n : $NF) }')
 : > "$out/$stem.h5.part"
-echo $$ > "$out/stub.pid"
 if grep -q SLOW "$deck"; then
-  sleep "${STUB_SLEEP:-0}" &
-  s=$!
+  # Traps first, then the pid file the tests wait for: a signal sent once
+  # the pid file exists finds the traps in place.
+  s=
   trap 'kill $s 2>/dev/null; exit 143' TERM
   if [ "${STUB_CHECKPOINT:-0}" = 1 ]; then
     trap 'echo usr1 >> "$out/stub.signals"; kill $s 2>/dev/null; : > "$out/$stem.checkpoint.h5"; exit 5' USR1
     trap 'echo term >> "$out/stub.signals"; kill $s 2>/dev/null; : > "$out/$stem.checkpoint.h5"; exit 5' TERM
   fi
+  sleep "${STUB_SLEEP:-0}" &
+  s=$!
+  echo $$ > "$out/stub.pid"
   wait $s
+else
+  echo $$ > "$out/stub.pid"
 fi
 if [ "$code" = 0 ]; then mv "$out/$stem.h5.part" "$out/$stem.h5"; else mv "$out/$stem.h5.part" "$out/$stem.incomplete.h5"; fi
 exit "$code"

@@ -56,7 +56,7 @@ cd "$work" || exit 1
 export GFORTRAN_ERROR_BACKTRACE=0
 unset RACCORD_WALLCLOCK_SECONDS
 
-# deck FOLDER [EXTRA_RUN_KEYS [FRICTION]]: FOLDER/slide.nml
+# deck FOLDER [EXTRA_RUN_KEYS [FRICTION [METHOD]]]: FOLDER/slide.nml
 deck() {
   mkdir -p "$1"
   cat > "$1/slide.nml" <<EOF
@@ -96,6 +96,7 @@ deck() {
 /
 &contact_pair
   slave = 'slider_bottom', master = 'base_top', friction = ${3:-0.3}
+  method = '${4:-node_to_segment}'
 /
 EOF
 }
@@ -108,9 +109,10 @@ run() {
   code=$?
 }
 
-# reference: the continuous run in cont/.
+# reference [METHOD]: the continuous run in cont/.
 reference() {
-  deck cont
+  rm -rf cont
+  deck cont '' 0.3 "${1:-node_to_segment}"
   run cont -o cont cont/slide.nml
   [ "$code" -eq 0 ] || { fail "reference run exit $code"; cat cont/run.out; finish; }
   # The scene does slide both ways: tangential force reaches -mu N and +mu N.
@@ -180,6 +182,7 @@ signal)
   wait "$pid"
   code=$?
   check "SIGUSR1: exit 5" test "$code" -eq 5
+  check "SIGUSR1 under -q: nothing on stdout or stderr (exit 5 is no error)" test ! -s usr1/run.out
   stopped usr1
   check "SIGUSR1: the log says why" has usr1/slide.log "SIGUSR1 received"
   check "SIGUSR1: checkpoint in mid-run (step > 300)" test "$(ckpt_step usr1/slide.checkpoint.h5)" -gt 300
@@ -187,8 +190,9 @@ signal)
   check "restart (scene from the checkpoint): exit 0" test "$code" -eq 0
   check "the log of the restart continues the first one" has usr1/slide.log "restart from usr1/slide.checkpoint.h5"
   same_results usr1
-  # SIGTERM does the same.
-  deck term
+  # SIGTERM does the same; with mortar matching this time.
+  reference mortar
+  deck term '' 0.3 mortar
   start_frozen term '[ "$(last_row_step term/slide.history.txt.part 2>/dev/null || echo 0)" -ge 700 ]' \
     -o term term/slide.nml
   kill -TERM "$pid"
