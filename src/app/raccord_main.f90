@@ -35,8 +35,8 @@ program raccord_main
   use raccord_output, only: output_t, output_mark_t, open_outputs, write_due_outputs, close_outputs, &
     mark_outputs, suspend_outputs, resume_outputs, history_width
   use raccord_checkpoint, only: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path
-  use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, note_step, stop_reason, &
-    checkpoint_due, note_checkpoint
+  use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, note_step, must_stop, &
+    stop_reason, checkpoint_due, note_checkpoint
   use raccord_files, only: make_directory, file_exists, delete_file
   implicit none
 
@@ -142,9 +142,12 @@ program raccord_main
     ! Step boundary: the state is u(n), u(n-1), v(n-1/2) and the energy
     ! account; a checkpoint here continues bit for bit.
     call note_step(control)
-    why = stop_reason(control)
-    if (len(why) > 0 .or. checkpoint_due(control, state%step)) call save_checkpoint()
-    if (len(why) > 0) call stop_at_checkpoint(why)
+    if (must_stop(control)) then
+      why = stop_reason(control)
+      call save_checkpoint()
+      call stop_at_checkpoint(why)
+    end if
+    if (checkpoint_due(control, state%step)) call save_checkpoint()
   end do time_steps
 
   ! Phase 6: close the results under their final names; the checkpoint of

@@ -28,8 +28,8 @@ module raccord_run_control
     integer :: checkpoints = 0                    !< checkpoints written by this process
   end type run_control_t
 
-  public :: start_run_control, set_run_limits, note_step, stop_reason, checkpoint_due, note_checkpoint, &
-    elapsed_seconds
+  public :: start_run_control, set_run_limits, note_step, must_stop, stop_reason, checkpoint_due, &
+    note_checkpoint, elapsed_seconds
 
 contains
 
@@ -61,8 +61,16 @@ contains
     ctl%clock_last = now
   end subroutine note_step
 
-  !> Why the run must stop now, with a checkpoint: '' to go on, else the
-  !> reason (a stop signal, or the wall-clock limit near).
+  !> The run must stop now, with a checkpoint: a stop signal came, or the
+  !> wall-clock limit is near. Cheap and allocation-free: called every step.
+  logical function must_stop(ctl)
+    type(run_control_t), intent(in) :: ctl
+    must_stop = stop_signal() /= 0
+    if (must_stop .or. ctl%limit <= 0.0_wp) return
+    must_stop = elapsed_seconds(ctl) + margin_seconds(ctl) >= ctl%limit
+  end function must_stop
+
+  !> Why must_stop is true, for the log and the results' /status.
   function stop_reason(ctl) result(reason)
     type(run_control_t), intent(in) :: ctl
     character(len=:), allocatable :: reason
@@ -74,11 +82,17 @@ contains
     end if
     if (ctl%limit <= 0.0_wp) return
     elapsed = elapsed_seconds(ctl)
-    margin = 2.0_wp*ctl%step_max + merge(ctl%write_max, ctl%step_max, ctl%checkpoints > 0)
+    margin = margin_seconds(ctl)
     if (elapsed + margin >= ctl%limit) reason = 'wall-clock limit ' // str(ctl%limit, 6) // ' s (' // &
       ctl%limit_source // ') near: ' // str(elapsed, 4) // ' s elapsed, next step and checkpoint take up to ' // &
       str(margin, 3) // ' s'
   end function stop_reason
+
+  !> 2 t_step + t_write (t_step before the first checkpoint).
+  pure real(wp) function margin_seconds(ctl)
+    type(run_control_t), intent(in) :: ctl
+    margin_seconds = 2.0_wp*ctl%step_max + merge(ctl%write_max, ctl%step_max, ctl%checkpoints > 0)
+  end function margin_seconds
 
   !> A periodic checkpoint is due at the start of this step.
   pure logical function checkpoint_due(ctl, step)

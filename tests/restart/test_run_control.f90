@@ -28,7 +28,8 @@ contains
 
   subroutine test_margin(failure)
     use raccord_kinds, only: wp
-    use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, stop_reason, note_checkpoint
+    use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, stop_reason, note_checkpoint, &
+      must_stop
     type(failure_t), allocatable, intent(out) :: failure
     type(run_control_t) :: ctl
     call start_run_control(ctl)
@@ -36,9 +37,10 @@ contains
     call set_elapsed(ctl, 9.5_wp)
     ! 9.5 s elapsed, steps of 0.1 s: 9.5 + 3 x 0.1 = 9.8 < 10, go on.
     ctl%step_max = 0.1_wp
-    call check(failure, len(stop_reason(ctl)) == 0, '9.5 s + 3 x 0.1 s < 10 s: must go on')
+    call check(failure, len(stop_reason(ctl)) == 0 .and. .not. must_stop(ctl), '9.5 s + 3 x 0.1 s < 10 s: must go on')
     ! Steps of 0.2 s: 9.5 + 0.6 >= 10, stop, and the reason says so.
     ctl%step_max = 0.2_wp
+    call check(failure, must_stop(ctl), '9.5 s + 3 x 0.2 s >= 10 s: must_stop')
     call check(failure, index(stop_reason(ctl), 'wall-clock limit 10 s (test) near') == 1, &
       '9.5 s + 3 x 0.2 s >= 10 s: must stop; got "' // stop_reason(ctl) // '"')
     ! After a checkpoint that took 0.05 s, the write time is measured: 9.5 + 0.4 + 0.05 < 10.
