@@ -20,7 +20,7 @@ module raccord_output
   use raccord_contact_pair, only: contact_pair_t
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
-  use raccord_files, only: rename_file, file_size, truncate_file, file_exists
+  use raccord_files, only: rename_file, file_size, truncate_file
   use raccord_deck, only: write_scene
   implicit none
   private
@@ -203,6 +203,7 @@ contains
     character(len=16) :: tag
     character(len=256) :: msg
     integer :: k, n, ios
+    integer(i8) :: bytes
 
     call prepare_outputs(out, scene, model, plan, pairs, stem)
     if (mark%nrow > size(out%table, 2) .or. size(mark%table, 1) /= size(out%columns)) then
@@ -210,6 +211,28 @@ contains
         'table; run the scene afresh without --restart')
       return
     end if
+    ! Every running file must be there before any is touched: a refused
+    ! resume leaves them as they were.
+    if (size(mark%profile_bytes) /= size(pairs)) then
+      call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' has ' // str(size(mark%profile_bytes)) // &
+        ' contact profiles, the scene ' // str(size(pairs)) // ' contact pairs')
+      return
+    end if
+    do k = 0, size(pairs)
+      if (k == 0) then
+        path = stem // '.history.txt.part'
+        bytes = mark%history_bytes
+      else
+        path = profile_name(out, k) // '.part'
+        bytes = mark%profile_bytes(k)
+      end if
+      ! file_size is -1 for a missing file.
+      if (file_size(path) < max(bytes, 0_i8)) then
+        call raise_error(err, EXIT_INPUT, 'cannot resume: ' // path // ' is missing or shorter than at the ' // &
+          'checkpoint; run the scene afresh without --restart')
+        return
+      end if
+    end do
     ! The fields write_frame writes, in its order.
     fields = [character(len=16) :: 'displacement', 'velocity', 'reaction']
     ncomps = [2, 2, 2]
@@ -234,18 +257,8 @@ contains
     call history_resume(out%hist, stem // '.history.txt', size(out%columns), mark%history_bytes, err)
     if (err%failed()) return
     allocate(out%profile_unit(size(pairs)))
-    if (size(mark%profile_bytes) /= size(pairs)) then
-      call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' has ' // str(size(mark%profile_bytes)) // &
-        ' contact profiles, the scene ' // str(size(pairs)) // ' contact pairs')
-      return
-    end if
     do k = 1, size(pairs)
       path = profile_name(out, k) // '.part'
-      if (file_size(path) < mark%profile_bytes(k)) then
-        call raise_error(err, EXIT_INPUT, 'cannot resume: ' // path // ' is missing or shorter than at the ' // &
-          'checkpoint; run the scene afresh without --restart')
-        return
-      end if
       call truncate_file(path, mark%profile_bytes(k), err)
       if (err%failed()) return
       open(newunit=out%profile_unit(k), file=path, status='old', position='append', action='write', &

@@ -385,18 +385,22 @@ contains
     end if
     res%is_open = .true.
     allocate(res%blocks(size(blocks)), res%frames(max(8, nframe + 8)))
+    ! Checks before any change: a refused file is closed untouched.
     call h5_read_attr_text(res%file, 'format', fmt, res%where, err)
-    if (err%failed()) return
-    if (fmt /= 'raccord results') then
-      call raise_error(err, EXIT_INPUT, res%where // ' is not a raccord results file (format "' // fmt // '")')
-      return
+    if (.not. err%failed()) then
+      if (fmt /= 'raccord results') call raise_error(err, EXIT_INPUT, res%where // &
+        ' is not a raccord results file (format "' // fmt // '")')
     end if
-    call h5_dims(res%file, '/mesh/x', dims, res%where, err)
-    if (err%failed()) return
-    if (size(dims) /= 2) dims = [0_hsize_t, 0_hsize_t]
-    if (dims(2) /= int(nnode, hsize_t)) then
-      call raise_error(err, EXIT_INPUT, res%where // ' holds a mesh of ' // str(int(dims(2))) // &
-        ' nodes, the model has ' // str(nnode) // '; it belongs to another run')
+    if (.not. err%failed()) call h5_dims(res%file, '/mesh/x', dims, res%where, err)
+    if (.not. err%failed()) then
+      if (size(dims) /= 2) dims = [0_hsize_t, 0_hsize_t]
+      if (dims(2) /= int(nnode, hsize_t)) call raise_error(err, EXIT_INPUT, res%where // ' holds a mesh of ' // &
+        str(int(dims(2))) // ' nodes, the model has ' // str(nnode) // '; it belongs to another run')
+    end if
+    if (err%failed()) then
+      call h5fclose_f(res%file, hdferr)
+      call h5_release(err)
+      res = results_t()
       return
     end if
     res%nnode = nnode

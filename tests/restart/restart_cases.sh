@@ -301,6 +301,11 @@ refuse)
   run lost --restart lost/slide.checkpoint.h5 base/slide.nml
   check "results .part files gone: exit 2" test "$code" -eq 2
   check "results .part files gone: message" has lost/run.out "is missing"
+  mkdir -p hl && cp base/* hl/ && rm hl/slide.history.txt.part
+  run hl --restart hl/slide.checkpoint.h5 base/slide.nml
+  check "history .part gone: exit 2" test "$code" -eq 2
+  check "history .part gone: the other files untouched (still .part, no .incomplete)" \
+    sh -c "[ -s hl/slide.h5.part ] && [ -s hl/slide.contact1.txt.part ] && [ -z \"\$(find hl -name '*.incomplete.*')\" ] && cmp -s hl/slide.h5.part base/slide.h5.part"
   # Bad options.
   run . --check --restart base/slide.checkpoint.h5
   check "--check with --restart: exit 1" test "$code" -eq 1
