@@ -20,6 +20,7 @@ module raccord_checkpoint
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
   use raccord_strings, only: str
+  use raccord_log, only: log_warn
   use raccord_version, only: raccord_version_string
   use raccord_scene, only: scene_t
   use raccord_deck, only: write_scene
@@ -189,6 +190,11 @@ contains
     call open_checkpoint(path, file, err)
     if (err%failed()) return
     steps: block
+      call h5_read_attr_text(file, 'raccord_version', text, where, err)
+      if (err%failed()) exit steps
+      if (text /= raccord_version_string) call log_warn('checkpoint', where // ' was written by raccord ' // &
+        text // ', this is ' // raccord_version_string // ': the results may differ in round-off from an ' // &
+        'uninterrupted run')
       call h5_read_text(file, '/scene', text, where, err)
       if (err%failed()) exit steps
       if (text /= identity) then
@@ -292,6 +298,7 @@ contains
     if (.not. err%failed()) then
       if (.not. h5_link_exists(file, '/state/u')) call raise_error(err, EXIT_INPUT, where // ' is incomplete')
     end if
+
     if (err%failed()) call close_checkpoint(file, where, err)
   end subroutine open_checkpoint
 
