@@ -18,9 +18,15 @@
 # Environment: RACCORD (the executable); RACCORD_WALLCLOCK_SECONDS or what
 # lib.sh's hpc_wallclock_seconds derives from the Slurm job: exported to
 # raccord, and passed as --wall-clock when raccord lists that option.
-# Signals: TERM, INT, HUP stop raccord (TERM) and exit 128+n; USR1 is passed
-# on to raccord when it writes checkpoints (lib.sh, hpc_raccord_has_checkpoint),
-# ignored otherwise (an older raccord would die on it).
+# Restart: when CASEDIR/<stem>.checkpoint.h5 exists (an earlier attempt
+# stopped at its limit, or was killed after a periodic checkpoint) and is
+# newer than the deck, the run goes on from it (raccord --restart); a deck
+# rewritten since starts the case again (raccord deletes the old checkpoint).
+# Signals: USR1 is passed on to raccord when it writes checkpoints (lib.sh,
+# hpc_raccord_has_checkpoint; it writes one and exits 5), ignored otherwise
+# (an older raccord would die on it). TERM is passed on too: a raccord with
+# checkpoints stops the same way (exit 5), otherwise it dies and this script
+# exits 128+15. INT and HUP stop raccord (TERM) and exit 128+n.
 set -u
 hpc_prog=run-case.sh
 hpc_dir=$(cd "$(dirname "$0")" && pwd)
@@ -72,13 +78,26 @@ if [ -n "$wall" ]; then
   export RACCORD_WALLCLOCK_SECONDS
   if [ "$checkpoint" = 1 ]; then set -- --wall-clock "$wall"; fi
 fi
+ckpt=$dir/$stem.checkpoint.h5
+stage=run
+if [ "$checkpoint" = 1 ] && [ -f "$ckpt" ] && [ -n "$(find "$ckpt" -newer "$deck" -print 2>/dev/null)" ]; then
+  set -- "$@" --restart "$ckpt"
+  stage=restart
+  echo "case $name: going on from $ckpt"
+fi
 
 pid=
 got_signal=0
 stop() { # signal number
   trap '' TERM INT HUP
-  if [ -n "$pid" ]; then kill -TERM "$pid" 2>/dev/null; wait "$pid" 2>/dev/null; fi
-  attempt run "signal-$1"
+  _rc=
+  if [ -n "$pid" ]; then kill -TERM "$pid" 2>/dev/null; wait "$pid" 2>/dev/null; _rc=$?; fi
+  if [ "$checkpoint" = 1 ] && [ "$_rc" = 5 ]; then
+    attempt "$stage" 5
+    echo "case $name: stopped by signal $1, checkpoint written (exit 5): resubmit to go on [$dir]"
+    exit 5
+  fi
+  attempt "$stage" "signal-$1"
   echo "case $name: failed: stopped by signal $1 (raccord killed; its .part files are left, a rerun starts again) [$dir]"
   exit $((128 + $1))
 }
@@ -107,7 +126,7 @@ while :; do
   break
 done
 pid=
-attempt run "$code"
+attempt "$stage" "$code"
 secs=$(($(hpc_now) - start))
 case "$code" in
 0)

@@ -1,5 +1,7 @@
 !> Command line of the raccord program.
 module raccord_cli
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_USAGE
   implicit none
   private
@@ -13,6 +15,9 @@ module raccord_cli
     logical :: verbose = .false.       !< debug messages
     character(len=:), allocatable :: scene_path
     character(len=:), allocatable :: output_dir   !< overrides &run output_dir when set
+    character(len=:), allocatable :: restart_path !< checkpoint to continue from (--restart)
+    real(wp) :: wall_clock = 0.0_wp              !< --wall-clock or RACCORD_WALLCLOCK_SECONDS; 0 = not given
+    character(len=:), allocatable :: wall_clock_source  !< where wall_clock came from, for the log
   end type cli_t
 
   public :: parse_command_line, usage_text
@@ -22,8 +27,8 @@ contains
   subroutine parse_command_line(cli, err)
     type(cli_t), intent(out) :: cli
     type(error_t), intent(inout) :: err
-    integer :: k, n, length
-    character(len=:), allocatable :: arg
+    integer :: k, n, length, stat
+    character(len=:), allocatable :: arg, value
 
     n = command_argument_count()
     k = 0
@@ -44,14 +49,24 @@ contains
       case ('-v', '--verbose')
         cli%verbose = .true.
       case ('-o', '--output')
-        if (k == n) then
-          call raise_error(err, EXIT_USAGE, 'option ' // arg // ' needs a folder: raccord --output DIR SCENE')
+        call option_value(k, n, arg, 'a folder: raccord --output DIR SCENE', cli%output_dir, err)
+        if (err%failed()) return
+      case ('--restart')
+        call option_value(k, n, arg, 'a checkpoint: raccord --restart DIR/NAME.checkpoint.h5 [SCENE]', &
+          cli%restart_path, err)
+        if (err%failed()) return
+        if (index(cli%restart_path, '.checkpoint.h5', back=.true.) /= len(cli%restart_path) - 13 .or. &
+            len(cli%restart_path) <= 14) then
+          call raise_error(err, EXIT_USAGE, '--restart ' // cli%restart_path // ': give the <name>.checkpoint.h5 ' // &
+            'file a stopped run wrote')
           return
         end if
-        k = k + 1
-        call get_command_argument(k, length=length)
-        allocate(character(len=length) :: cli%output_dir)
-        call get_command_argument(k, cli%output_dir)
+      case ('--wall-clock')
+        call option_value(k, n, arg, 'seconds: raccord --wall-clock 3600 SCENE', value, err)
+        if (err%failed()) return
+        call read_seconds(value, 'option --wall-clock', cli%wall_clock, err)
+        if (err%failed()) return
+        cli%wall_clock_source = '--wall-clock'
       case default
         if (arg(1:1) == '-' .and. len(arg) > 1) then
           call raise_error(err, EXIT_USAGE, 'unknown option ''' // arg // '''; see raccord --help')
@@ -66,15 +81,70 @@ contains
       end select
       deallocate(arg)
     end do
-    if (.not. (cli%help .or. cli%version) .and. .not. allocated(cli%scene_path)) then
+    if (cli%help .or. cli%version) return
+    if (.not. allocated(cli%scene_path) .and. .not. allocated(cli%restart_path)) then
       call raise_error(err, EXIT_USAGE, 'no scene given; usage: raccord [options] SCENE (raccord --help)')
+      return
+    end if
+    if (cli%check .and. allocated(cli%restart_path)) then
+      call raise_error(err, EXIT_USAGE, '--check and --restart do not go together: check the scene alone ' // &
+        '(raccord --check SCENE)')
+      return
+    end if
+    ! The job scripts pass the limit in the environment (doc/hpc.md).
+    if (.not. allocated(cli%wall_clock_source)) then
+      call get_environment_variable('RACCORD_WALLCLOCK_SECONDS', length=length, status=stat)
+      if (stat == 0 .and. length > 0) then
+        allocate(character(len=length) :: value)
+        call get_environment_variable('RACCORD_WALLCLOCK_SECONDS', value)
+        call read_seconds(value, 'environment variable RACCORD_WALLCLOCK_SECONDS', cli%wall_clock, err)
+        if (err%failed()) return
+        cli%wall_clock_source = 'RACCORD_WALLCLOCK_SECONDS'
+      end if
     end if
   end subroutine parse_command_line
+
+  !> The value after option `arg` (argument k+1), or a usage error.
+  subroutine option_value(k, n, arg, needs, value, err)
+    integer, intent(inout) :: k
+    integer, intent(in) :: n
+    character(len=*), intent(in) :: arg, needs
+    character(len=:), allocatable, intent(out) :: value
+    type(error_t), intent(inout) :: err
+    integer :: length
+    if (k == n) then
+      call raise_error(err, EXIT_USAGE, 'option ' // arg // ' needs ' // needs)
+      return
+    end if
+    k = k + 1
+    call get_command_argument(k, length=length)
+    allocate(character(len=length) :: value)
+    call get_command_argument(k, value)
+  end subroutine option_value
+
+  !> A wall-clock limit in seconds: a finite number > 0.
+  subroutine read_seconds(text, what, seconds, err)
+    character(len=*), intent(in) :: text, what
+    real(wp), intent(out) :: seconds
+    type(error_t), intent(inout) :: err
+    integer :: ios
+    seconds = 0.0_wp
+    read(text, *, iostat=ios) seconds
+    if (ios == 0) then
+      if (.not. ieee_is_finite(seconds)) ios = 1
+    end if
+    if (ios /= 0 .or. .not. (seconds > 0.0_wp)) then
+      seconds = 0.0_wp
+      call raise_error(err, EXIT_USAGE, what // ' = ''' // text // ''' is not a number of seconds > 0 ' // &
+        '(e.g. 3600)')
+    end if
+  end subroutine read_seconds
 
   function usage_text() result(s)
     character(len=:), allocatable :: s
     character(len=*), parameter :: nl = new_line('a')
-    s = 'usage: raccord [options] SCENE' // nl // nl // &
+    s = 'usage: raccord [options] SCENE' // nl // &
+      '       raccord [options] --restart CHECKPOINT [SCENE]' // nl // nl // &
       'Runs the scene deck SCENE (Fortran namelist groups; see doc/scene-reference.md):' // nl // &
       'explicit central-difference dynamics of 2D elastic bodies, with contact by' // nl // &
       'forward-increment Lagrange multipliers.' // nl // nl // &
@@ -82,11 +152,19 @@ contains
       '  --check         read and check the scene and mesh, print the resolved scene,' // nl // &
       '                  stable time step, steps, elements and estimated cost; do not run' // nl // &
       '  -o, --output DIR  write results to DIR (overrides &run output_dir)' // nl // &
+      '  --wall-clock S  stop after at most S wall seconds: write the checkpoint' // nl // &
+      '                  DIR/NAME.checkpoint.h5 and exit 5 (default: environment variable' // nl // &
+      '                  RACCORD_WALLCLOCK_SECONDS, else &run wall_clock; SIGTERM and' // nl // &
+      '                  SIGUSR1 do the same at once)' // nl // &
+      '  --restart CHECKPOINT  continue the run that wrote CHECKPOINT, with its results' // nl // &
+      '                  files (SCENE defaults to the deck it was written for; it must' // nl // &
+      '                  resolve to the same scene)' // nl // &
       '  -q, --quiet     progress and info to the log file only' // nl // &
       '  -v, --verbose   debug messages' // nl // &
       '  -V, --version   print the version' // nl // &
       '  -h, --help      this text' // nl // nl // &
       'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure,' // nl // &
-      '            4 file system failure, 5 stopped at the wall-clock limit (checkpoint written)'
+      '            4 file system failure, 5 stopped at the wall-clock limit or by SIGTERM or SIGUSR1,' // nl // &
+      '            checkpoint written: continue with --restart (a checkpoint it refuses: 2)'
   end function usage_text
 end module raccord_cli

@@ -11,16 +11,18 @@ program raccord_main
   use, intrinsic :: iso_fortran_env, only: output_unit
   use, intrinsic :: iso_c_binding, only: c_int
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, &
     EXIT_WALLCLOCK
-  use raccord_log, only: log_open, log_close, log_info, log_error, log_raw, log_set_quiet, log_set_level, &
+  use raccord_log, only: log_open, log_close, log_info, log_warn, log_debug, log_error, log_raw, log_set_quiet, log_set_level, &
     LEVEL_DEBUG, log_unit
   use raccord_strings, only: str
   use raccord_version, only: raccord_version_string
+  use raccord_signals, only: install_stop_signals
   use raccord_cli, only: cli_t, parse_command_line, usage_text
   use raccord_scene, only: scene_t
   use raccord_deck, only: read_scene, write_scene
+  use raccord_paths, only: path_dir, path_base, absolute_path
   use raccord_mesh, only: mesh_t
   use raccord_mesh_io, only: read_mesh
   use raccord_model, only: model_t
@@ -30,9 +32,21 @@ program raccord_main
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
   use raccord_run_report, only: report_plan, report_summary, run_stem
-  use raccord_output, only: output_t, open_outputs, write_due_outputs, close_outputs
-  use raccord_files, only: make_directory
+  use raccord_output, only: output_t, output_mark_t, open_outputs, write_due_outputs, close_outputs, &
+    mark_outputs, suspend_outputs, resume_outputs, history_width
+  use raccord_checkpoint, only: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path
+  use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, note_step, must_stop, &
+    stop_reason, checkpoint_due, note_checkpoint
+  use raccord_files, only: make_directory, file_exists, delete_file
   implicit none
+
+  interface
+    ! POSIX _exit: leave without running atexit handlers.
+    subroutine c_exit(status) bind(C, name='_exit')
+      import :: c_int
+      integer(c_int), value :: status
+    end subroutine c_exit
+  end interface
 
   type(cli_t) :: cli
   type(scene_t) :: scene
@@ -41,11 +55,15 @@ program raccord_main
   type(time_plan_t) :: plan
   type(state_t) :: state
   type(output_t) :: out
+  type(run_control_t) :: control
   type(contact_pair_t), allocatable :: pairs(:)
   type(error_t) :: err
-  character(len=:), allocatable :: stem
+  character(len=:), allocatable :: stem, why, recorded_scene
+  logical :: restart
+  integer(i8) :: first_step
 
-  ! Phase 0: what the user asked for.
+  ! Phase 0: what the user asked for; stop signals ask for a checkpoint.
+  call start_run_control(control)
   call parse_command_line(cli, err)
   if (err%failed()) call finish(err)
   if (cli%help) then
@@ -58,11 +76,22 @@ program raccord_main
   end if
   if (cli%quiet) call log_set_quiet(.true.)
   if (cli%verbose) call log_set_level(LEVEL_DEBUG)
+  restart = allocated(cli%restart_path)
+  if (.not. cli%check) call install_stop_signals(err)
+  if (err%failed()) call finish(err)
 
-  ! Phase 1: the scene deck, and the run's folder and log.
+  ! Phase 1: the scene deck, and the run's folder and log. A restart goes
+  ! on in the checkpoint's folder, with the deck it was written for unless
+  ! another is given.
+  if (restart) then
+    call checkpoint_scene_path(cli%restart_path, recorded_scene, err)   ! also checks the file
+    if (err%failed()) call finish(err)
+    if (.not. allocated(cli%scene_path)) cli%scene_path = recorded_scene
+  end if
   call read_scene(cli%scene_path, scene, err)
   if (err%failed()) call finish(err)
   if (allocated(cli%output_dir)) scene%run%output_dir = cli%output_dir
+  if (restart) call place_restart()
   stem = run_stem(scene)
   if (.not. cli%check) call open_run_folder()
 
@@ -84,11 +113,17 @@ program raccord_main
     stop
   end if
 
-  ! Phase 5: march in time.
+  ! Phase 5: march in time, from t = 0 or from the checkpoint.
   call init_state(model, plan%dt, plan%nsteps, state)
-  call open_outputs(out, scene, model, plan, pairs, stem, err)
-  if (err%failed()) call finish(err)
+  if (restart) then
+    call resume_run()
+  else
+    call open_outputs(out, scene, model, plan, pairs, stem, err)
+    if (err%failed()) call finish(err)
+  end if
+  first_step = state%step
   if (model%has_body_force) state%f_ext = model%f_body
+  call start_limits()
 
   time_steps: do
     call compute_forces(model, state)        ! f_int(u(n)), f_ext(t(n))
@@ -104,23 +139,140 @@ program raccord_main
     if (err%failed()) call finish(err)
     if (state%step == state%nsteps) exit time_steps
     call advance_state(state)                ! n <- n+1
+    ! Step boundary: the state is u(n), u(n-1), v(n-1/2) and the energy
+    ! account; a checkpoint here continues bit for bit.
+    call note_step(control)
+    if (must_stop(control)) then
+      why = stop_reason(control)
+      call save_checkpoint()
+      call stop_at_checkpoint(why)
+    end if
+    if (checkpoint_due(control, state%step)) call save_checkpoint()
   end do time_steps
 
-  ! Phase 6: close the results under their final names.
+  ! Phase 6: close the results under their final names; the checkpoint of
+  ! this run is no longer needed.
   call close_outputs(out, .true., '', err)
   if (err%failed()) call finish(err)
-  call report_summary(model, state, out, pairs)
+  call delete_file(checkpoint_name(stem))
+  call report_summary(model, state, out, pairs, first_step)
+  call log_debug('raccord', 'longest step ' // str(control%step_max, 3) // ' s, longest checkpoint write ' // &
+    str(control%write_max, 3) // ' s (' // str(control%checkpoints) // ' checkpoints)')
   call log_close()
 
 contains
 
-  !> Create the output folder and open the log file in it.
+  !> A restart writes where the checkpoint is: its folder is the output
+  !> folder and its name, <stem>.checkpoint.h5, names the run, which must be
+  !> the deck's (the running results files carry that name).
+  subroutine place_restart()
+    character(len=*), parameter :: suffix = '.checkpoint.h5'
+    character(len=:), allocatable :: p, dir, name
+    p = cli%restart_path     ! ends in suffix (parse_command_line)
+    dir = path_dir(p)
+    name = path_base(p(1:len(p)-len(suffix)))
+    if (allocated(cli%output_dir)) then
+      if (absolute_path(trim_slash(cli%output_dir)) /= absolute_path(dir)) then
+        call raise_error(err, EXIT_USAGE, '--output ' // cli%output_dir // ' is not the folder of the checkpoint ' // &
+          p // ': a restart writes where its checkpoint is; leave --output out or make them agree')
+        call finish(err)
+      end if
+    end if
+    scene%run%output_dir = dir
+    if (path_base(run_stem(scene)) /= name) then
+      call raise_error(err, EXIT_INPUT, 'restart refused: ' // p // ' belongs to the run ''' // name // &
+        ''', but scene ' // scene%path // ' names its run ''' // path_base(run_stem(scene)) // &
+        '''; give the deck the checkpoint was written for')
+      call finish(err)
+    end if
+  end subroutine place_restart
+
+  pure function trim_slash(path) result(s)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: s
+    s = path
+    do while (len(s) > 1)
+      if (s(len(s):len(s)) /= '/') exit
+      s = s(1:len(s)-1)
+    end do
+  end function trim_slash
+
+  !> Restore the state, contact sets and energies from the checkpoint and
+  !> reopen the running result files where it left them.
+  subroutine resume_run()
+    type(output_mark_t) :: mark
+    call read_checkpoint(cli%restart_path, scene, state, pairs, history_width(model, pairs), mark, err)
+    if (err%failed()) call finish(err)
+    call resume_outputs(out, scene, model, plan, pairs, stem, mark, err)
+    if (err%failed()) call finish(err)
+    call log_info('raccord', 'restart from ' // cli%restart_path // ' at step ' // str(state%step) // &
+      ', t = ' // str(state%time) // ' (' // str(mark%frames_written) // ' frames, ' // str(mark%nrow) // &
+      ' history rows kept)')
+  end subroutine resume_run
+
+  !> Wall-clock limit (command line, environment, then scene) and the
+  !> periodic checkpoints; a fresh run removes the checkpoint of an
+  !> earlier run of the same name, which its new files make useless.
+  subroutine start_limits()
+    if (cli%wall_clock > 0.0_wp) then
+      call set_run_limits(control, cli%wall_clock, cli%wall_clock_source, scene%run%checkpoint_every)
+    else
+      call set_run_limits(control, scene%run%wall_clock, '&run wall_clock', scene%run%checkpoint_every)
+    end if
+    if (control%limit > 0.0_wp) call log_info('raccord', 'wall-clock limit ' // str(control%limit, 6) // &
+      ' s (' // control%limit_source // '): a checkpoint is written and the run stops (exit 5) before it')
+    if (restart) then
+      continue
+    else if (file_exists(checkpoint_name(stem))) then
+      call log_warn('raccord', 'starting from t = 0: the checkpoint ' // checkpoint_name(stem) // &
+        ' of an earlier run is deleted (raccord --restart continues a run instead)')
+      call delete_file(checkpoint_name(stem))
+    end if
+    call note_step(control)
+  end subroutine start_limits
+
+  !> Write the checkpoint at this step boundary (outputs flushed first, so
+  !> that what it records of them is on disk).
+  subroutine save_checkpoint()
+    type(output_mark_t) :: mark
+    integer(i8) :: c0, c1, rate
+    call system_clock(c0, rate)
+    call mark_outputs(out, mark, err)
+    if (err%failed()) call finish(err)
+    call write_checkpoint(stem, scene, state, pairs, mark, err)
+    if (err%failed()) call finish(err)
+    call system_clock(c1)
+    call note_checkpoint(control, real(c1 - c0, wp)/real(rate, wp))
+    call log_info('raccord', 'checkpoint ' // checkpoint_name(stem) // ' at step ' // str(state%step) // &
+      ', t = ' // str(state%time) // ' (' // str(real(c1 - c0, wp)/real(rate, wp), 3) // ' s)')
+  end subroutine save_checkpoint
+
+  !> Stop after a checkpoint: the running files stay *.part (never
+  !> complete-looking), exit 5.
+  subroutine stop_at_checkpoint(reason)
+    character(len=*), intent(in) :: reason
+    type(error_t) :: serr
+    call suspend_outputs(out, 'suspended at step ' // str(state%step) // ' (' // reason // '); continue with ' // &
+      'raccord --restart ' // checkpoint_name(stem), serr)
+    if (serr%failed()) call finish(serr)
+    call log_info('raccord', 'stopped at step ' // str(state%step) // ' of ' // str(state%nsteps) // ', t = ' // &
+      str(state%time) // ': ' // reason)
+    call log_info('raccord', 'continue with: raccord --restart ' // checkpoint_name(stem))
+    call log_close()
+    ! Exit 5 is not an error: no ERROR STOP text or backtrace on stderr.
+    ! Every file is closed and the HDF5 library released by now.
+    flush(output_unit)
+    call c_exit(int(EXIT_WALLCLOCK, c_int))
+  end subroutine stop_at_checkpoint
+
+  !> Create the output folder and open the log file in it (a restart
+  !> appends to the log of the run it continues).
   subroutine open_run_folder()
     integer :: stat
     character(len=512) :: msg
     call make_directory(scene%run%output_dir, err)
     if (err%failed()) call finish(err)
-    call log_open(stem // '.log', stat, msg)
+    call log_open(stem // '.log', stat, msg, append=restart)
     if (stat /= 0) then
       call raise_error(err, EXIT_IO, 'cannot write the log file ' // stem // '.log: ' // trim(msg))
       call finish(err)
@@ -159,13 +311,6 @@ contains
   subroutine finish(e)
     type(error_t), intent(in) :: e
     type(error_t) :: close_err
-    interface
-      ! POSIX _exit: leave without running atexit handlers.
-      subroutine c_exit(status) bind(C, name='_exit')
-        import :: c_int
-        integer(c_int), value :: status
-      end subroutine c_exit
-    end interface
     if (.not. e%failed()) return
     call close_outputs(out, .false., e%message, close_err)
     call log_error('raccord', e%message)

@@ -2,7 +2,7 @@
 !> time-history table (plain text and HDF5), progress lines in the log.
 module raccord_output
   use raccord_kinds, only: wp, i8
-  use raccord_error, only: error_t, raise_error, EXIT_IO
+  use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
   use raccord_log, only: log_info, log_raw
   use raccord_strings, only: str
   use raccord_mesh, only: nodes_per_element
@@ -13,12 +13,14 @@ module raccord_output
   use raccord_elastic_block, only: add_nodal_stress
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
-    results_write_table, results_set_text, results_close
-  use raccord_history_file, only: history_file_t, history_open, history_write, history_close
+    results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
+    results_delete, results_flush
+  use raccord_history_file, only: history_file_t, history_open, history_write, history_close, history_bytes, &
+    history_suspend, history_resume
   use raccord_contact_pair, only: contact_pair_t
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
-  use raccord_files, only: rename_file
+  use raccord_files, only: rename_file, file_size, truncate_file
   use raccord_deck, only: write_scene
   implicit none
   private
@@ -45,7 +47,18 @@ module raccord_output
     character(len=:), allocatable :: profile_path
   end type output_t
 
+  !> Where the outputs stand at a checkpoint: what a restarted run needs to
+  !> go on with the same files as if it had never stopped.
+  type, public :: output_mark_t
+    integer :: frames_written = 0
+    integer :: nrow = 0                         !< history rows kept for the HDF5 copy
+    real(wp), allocatable :: table(:,:)         !< (ncol, nrow) those rows
+    integer(i8) :: history_bytes = 0            !< length of <stem>.history.txt.part
+    integer(i8), allocatable :: profile_bytes(:) !< length of each <stem>.contact<k>.txt.part
+  end type output_mark_t
+
   public :: open_outputs, write_due_outputs, close_outputs, wall_seconds
+  public :: mark_outputs, suspend_outputs, resume_outputs, history_width
 
 contains
 
@@ -58,9 +71,37 @@ contains
     type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
     type(error_t), intent(inout) :: err
-    type(result_block_t), allocatable :: blocks(:)
-    integer :: ib, k, nblk, nrow_max
+    integer :: k
 
+    call prepare_outputs(out, scene, model, plan, pairs, stem)
+    call results_open(out%res, stem, err)
+    if (err%failed()) return
+    out%is_open = .true.
+    call results_write_mesh(out%res, model%x, result_blocks(model), err)
+    if (err%failed()) return
+    do k = 1, size(model%supports)
+      call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
+      if (err%failed()) return
+    end do
+    call keep_resolved_scene(scene, stem, out%res, err)
+    if (err%failed()) return
+    call history_open(out%hist, stem // '.history.txt', out%columns, err)
+    if (err%failed()) return
+    call open_profiles(out, pairs, err)
+    if (err%failed()) return
+    call system_clock(out%clock_start, out%clock_rate)
+    out%clock_last = out%clock_start
+  end subroutine open_outputs
+
+  !> Settings and scratch of the outputs, for a new or a resumed run.
+  subroutine prepare_outputs(out, scene, model, plan, pairs, stem)
+    type(output_t), intent(out) :: out
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=*), intent(in) :: stem
+    integer :: nrow_max
     out%stem = stem
     out%stress = scene%output%stress
     out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
@@ -72,10 +113,13 @@ contains
     nrow_max = int(plan%nsteps/out%history_every) + 3
     allocate(out%table(size(out%columns), nrow_max))
     allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
+  end subroutine prepare_outputs
 
-    call results_open(out%res, stem, err)
-    if (err%failed()) return
-    out%is_open = .true.
+  !> The element blocks of the results file, one per body block.
+  function result_blocks(model) result(blocks)
+    type(model_t), intent(in) :: model
+    type(result_block_t), allocatable :: blocks(:)
+    integer :: ib, k, nblk
     nblk = 0
     do ib = 1, size(model%bodies)
       nblk = nblk + size(model%bodies(ib)%blocks)
@@ -91,21 +135,145 @@ contains
         blocks(nblk)%conn = model%bodies(ib)%blocks(k)%conn
       end do
     end do
-    call results_write_mesh(out%res, model%x, blocks, err)
+  end function result_blocks
+
+  !> Number of history columns of this model and these pairs.
+  integer function history_width(model, pairs)
+    type(model_t), intent(in) :: model
+    type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=col_len), allocatable :: cols(:)
+    call history_columns(model, pairs, cols)
+    history_width = size(cols)
+  end function history_width
+
+  !> Flush every output and record where each stands, for a checkpoint.
+  subroutine mark_outputs(out, mark, err)
+    type(output_t), intent(inout) :: out
+    type(output_mark_t), intent(out) :: mark
+    type(error_t), intent(inout) :: err
+    integer :: k, ios
+    call results_flush(out%res, err)
     if (err%failed()) return
-    do k = 1, size(model%supports)
-      call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
-      if (err%failed()) return
+    mark%frames_written = out%frames_written
+    mark%nrow = out%nrow
+    mark%table = out%table(:, 1:out%nrow)
+    mark%history_bytes = history_bytes(out%hist)
+    allocate(mark%profile_bytes(size(out%profile_unit)))
+    do k = 1, size(out%profile_unit)
+      flush(out%profile_unit(k), iostat=ios)
+      if (ios /= 0) call raise_error(err, EXIT_IO, 'cannot flush ' // profile_name(out, k) // '.part (disk full?)')
+      mark%profile_bytes(k) = file_size(profile_name(out, k) // '.part')
     end do
-    call keep_resolved_scene(scene, stem, out%res, err)
+    if (mark%history_bytes < 0 .or. any(mark%profile_bytes < 0)) &
+      call raise_error(err, EXIT_IO, 'cannot measure the running output files of ' // out%stem)
+  end subroutine mark_outputs
+
+  !> Close every output but keep the .part names: the run stopped at a
+  !> checkpoint, and resume_outputs goes on with the same files. /status
+  !> of the results file says why it stopped.
+  subroutine suspend_outputs(out, reason, err)
+    type(output_t), intent(inout) :: out
+    character(len=*), intent(in) :: reason
+    type(error_t), intent(inout) :: err
+    integer :: k
+    if (.not. out%is_open) return
+    out%is_open = .false.
+    call history_suspend(out%hist, err)
+    call results_suspend(out%res, reason, err)
+    do k = 1, size(out%profile_unit)
+      close(out%profile_unit(k))
+    end do
+  end subroutine suspend_outputs
+
+  !> Reopen the outputs of a stopped run where its checkpoint left them
+  !> (mark): results, history and contact profiles are cut back to that
+  !> point (a run killed after its last checkpoint wrote more) and continued.
+  subroutine resume_outputs(out, scene, model, plan, pairs, stem, mark, err)
+    type(output_t), intent(out) :: out
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=*), intent(in) :: stem
+    type(output_mark_t), intent(in) :: mark
+    type(error_t), intent(inout) :: err
+    character(len=16), allocatable :: fields(:)
+    integer, allocatable :: ncomps(:)
+    character(len=:), allocatable :: path
+    character(len=16) :: tag
+    character(len=256) :: msg
+    integer :: k, n, ios
+    integer(i8) :: bytes
+
+    call prepare_outputs(out, scene, model, plan, pairs, stem)
+    if (mark%nrow > size(out%table, 2) .or. size(mark%table, 1) /= size(out%columns)) then
+      call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' does not fit this scene''s history ' // &
+        'table; run the scene afresh without --restart')
+      return
+    end if
+    ! Every running file must be there before any is touched: a refused
+    ! resume leaves them as they were.
+    if (size(mark%profile_bytes) /= size(pairs)) then
+      call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' has ' // str(size(mark%profile_bytes)) // &
+        ' contact profiles, the scene ' // str(size(pairs)) // ' contact pairs')
+      return
+    end if
+    do k = 0, size(pairs)
+      if (k == 0) then
+        path = stem // '.history.txt.part'
+        bytes = mark%history_bytes
+      else
+        path = profile_name(out, k) // '.part'
+        bytes = mark%profile_bytes(k)
+      end if
+      ! file_size is -1 for a missing file.
+      if (file_size(path) < max(bytes, 0_i8)) then
+        call raise_error(err, EXIT_INPUT, 'cannot resume: ' // path // ' is missing or shorter than at the ' // &
+          'checkpoint; run the scene afresh without --restart')
+        return
+      end if
+    end do
+    ! The fields write_frame writes, in its order.
+    fields = [character(len=16) :: 'displacement', 'velocity', 'reaction']
+    ncomps = [2, 2, 2]
+    if (out%stress) then
+      fields = [character(len=16) :: fields, 'stress']
+      ncomps = [ncomps, 4]
+    end if
+    call results_resume(out%res, stem, model%nnode, result_blocks(model), fields, ncomps, mark%frames_written, err)
     if (err%failed()) return
-    call history_open(out%hist, stem // '.history.txt', out%columns, err)
+    out%is_open = .true.
+    do k = 1, size(pairs)
+      n = mark%frames_written
+      do
+        write(tag, '(i6.6)') n
+        path = '/contact/pair_' // str(k) // '/frame_' // trim(tag)
+        if (.not. results_has(out%res, path)) exit
+        call results_delete(out%res, path, err)
+        if (err%failed()) return
+        n = n + 1
+      end do
+    end do
+    call history_resume(out%hist, stem // '.history.txt', size(out%columns), mark%history_bytes, err)
     if (err%failed()) return
-    call open_profiles(out, pairs, err)
-    if (err%failed()) return
+    allocate(out%profile_unit(size(pairs)))
+    do k = 1, size(pairs)
+      path = profile_name(out, k) // '.part'
+      call truncate_file(path, mark%profile_bytes(k), err)
+      if (err%failed()) return
+      open(newunit=out%profile_unit(k), file=path, status='old', position='append', action='write', &
+        iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+        call raise_error(err, EXIT_IO, 'cannot reopen ' // path // ': ' // trim(msg))
+        return
+      end if
+    end do
+    out%frames_written = mark%frames_written
+    out%nrow = mark%nrow
+    out%table(:, 1:mark%nrow) = mark%table
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
-  end subroutine open_outputs
+  end subroutine resume_outputs
 
   !> The resolved scene (every key with its final value) beside the
   !> results as <stem>.scene.nml, and as text in the HDF5 file (/scene, with

@@ -145,17 +145,23 @@ contains
   end function measure_step_seconds
 
   !> Wall time, speed and the final energy balance.
-  subroutine report_summary(model, state, out, pairs)
+  !> first_step: the step this process started from (0, or the step of
+  !> the checkpoint a restart continued); timings cover this process only.
+  subroutine report_summary(model, state, out, pairs, first_step)
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
     type(output_t), intent(in) :: out
     type(contact_pair_t), intent(in) :: pairs(:)
+    integer(i8), intent(in) :: first_step
     real(wp) :: wall, rate, tb, ts
-    integer(i8) :: cnt
+    integer(i8) :: cnt, nrun
     integer :: k
     wall = wall_seconds(out)
+    nrun = state%step + 1 - first_step
+    if (first_step > 0) call log_info('raccord', 'restarted run: steps ' // str(first_step) // ' to ' // &
+      str(state%step) // ' in this process; timings below are for them')
     call log_info('raccord', 'done: ' // str(state%step) // ' steps in ' // str(wall, 4) // ' s (' // &
-      str(1.0e9_wp*wall/real(max(1_i8, state%step + 1), wp)/real(max(1, model%nelem), wp), 3) // &
+      str(1.0e9_wp*wall/real(max(1_i8, nrun), wp)/real(max(1, model%nelem), wp), 3) // &
       ' ns per element per step, output included)')
     call log_info('raccord', 'energy: kinetic ' // str(state%energy%kinetic, 6) // ', internal ' // &
       str(state%energy%internal, 6) // ', external work ' // str(state%energy%external, 6) // &

@@ -19,14 +19,24 @@ module raccord_log
 
 contains
 
-  !> Open (replace) the log file. Returns iostat and a message on failure.
-  subroutine log_open(path, stat, msg)
+  !> Open (replace, or with append = .true. continue) the log file.
+  !> Returns iostat and a message on failure.
+  subroutine log_open(path, stat, msg, append)
     character(len=*), intent(in) :: path
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
+    logical, intent(in), optional :: append
+    logical :: keep
     msg = ''
+    keep = .false.
+    if (present(append)) keep = append
     if (file_unit /= -1) call log_close()
-    open(newunit=file_unit, file=path, status='replace', action='write', iostat=stat, iomsg=msg)
+    if (keep) then
+      open(newunit=file_unit, file=path, status='unknown', position='append', action='write', iostat=stat, &
+        iomsg=msg)
+    else
+      open(newunit=file_unit, file=path, status='replace', action='write', iostat=stat, iomsg=msg)
+    end if
     if (stat /= 0) file_unit = -1
   end subroutine log_open
 

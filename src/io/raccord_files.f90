@@ -1,4 +1,4 @@
-!> Small file-system helpers (rename, mkdir -p, exists, delete).
+!> Small file-system helpers (rename, mkdir -p, exists, delete, size, truncate).
 !>
 !> Fortran 2008 has no rename or mkdir, so these call the POSIX C library
 !> through ISO_C_BINDING interfaces; no C shim is needed. The one
@@ -7,12 +7,13 @@
 !> message needs to say how to fix it.
 module raccord_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_char, c_associated, &
-    c_f_pointer
+    c_f_pointer, c_long
+  use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_IO
   implicit none
   private
 
-  public :: rename_file, make_directory, file_exists, delete_file
+  public :: rename_file, make_directory, file_exists, delete_file, file_size, truncate_file
 
   !> access(2) mode "does the file exist".
   integer(c_int), parameter :: F_OK = 0_c_int
@@ -48,6 +49,14 @@ module raccord_files
       character(kind=c_char), intent(in) :: path(*)
       integer(c_int) :: rc
     end function c_unlink
+
+    ! off_t is a 64-bit long on the 64-bit Linux targets raccord builds for.
+    function c_truncate(path, length) bind(C, name='truncate') result(rc)
+      import :: c_int, c_char, c_long
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_long), value :: length
+      integer(c_int) :: rc
+    end function c_truncate
 
     function c_strerror(errnum) bind(C, name='strerror') result(text)
       import :: c_int, c_ptr
@@ -107,6 +116,31 @@ contains
     integer(c_int) :: rc
     rc = c_unlink(c_path(path))
   end subroutine delete_file
+
+  !> Size of a file in bytes, -1 when it does not exist or cannot be asked.
+  integer(i8) function file_size(path)
+    character(len=*), intent(in) :: path
+    integer(i8) :: n
+    integer :: ios
+    logical :: there
+    file_size = -1
+    inquire(file=path, exist=there, iostat=ios)
+    if (ios /= 0 .or. .not. there) return
+    inquire(file=path, size=n, iostat=ios)
+    if (ios == 0) file_size = n
+  end function file_size
+
+  !> Cut a file to `bytes` bytes (POSIX truncate): a restarted run drops
+  !> what a killed run wrote after its checkpoint.
+  subroutine truncate_file(path, bytes, err)
+    character(len=*), intent(in) :: path
+    integer(i8), intent(in) :: bytes
+    type(error_t), intent(inout) :: err
+    if (c_truncate(c_path(path), int(bytes, c_long)) /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot truncate "' // trim(path) // '" to ' // trim(i8_text(bytes)) &
+        // ' bytes: ' // last_error_text())
+    end if
+  end subroutine truncate_file
 
   ! --- private -----------------------------------------------------------
 
@@ -176,4 +210,10 @@ contains
       n = n - 1
     end do
   end function last_error_text
+
+  pure function i8_text(n) result(s)
+    integer(i8), intent(in) :: n
+    character(len=24) :: s
+    write(s, '(i0)') n
+  end function i8_text
 end module raccord_files

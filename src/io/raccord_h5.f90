@@ -24,7 +24,7 @@ module raccord_h5
   public :: h5_ensure_groups, h5_link_exists, h5_delete_link
   public :: h5_write_real, h5_write_int, h5_write_text
   public :: h5_attr_real, h5_attr_int, h5_attr_text, h5_attr_text_list
-  public :: h5_create_growing, h5_append_real, h5_append_int
+  public :: h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
 
   !> Write a real(wp) dataset of rank 1 or 2.
   interface h5_write_real
@@ -295,6 +295,43 @@ contains
     call close_after_append(dset, fspace, mspace, hdferr, path, where, err)
   end subroutine h5_append_int
 
+  !> Cut a growing 1D dataset to its first n entries (a resumed run drops
+  !> the frames a killed run wrote after its checkpoint). Returns the
+  !> length it had in `had`; n larger than that is an error.
+  subroutine h5_truncate_growing(loc, path, n, had, where, err)
+    integer(hid_t), intent(in) :: loc
+    character(len=*), intent(in) :: path, where
+    integer, intent(in) :: n
+    integer, intent(out) :: had
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: dset, space
+    integer(hsize_t) :: dims(1), maxdims(1)
+    integer :: hdferr, rank
+    had = -1
+    call h5dopen_f(loc, path, dset, hdferr)
+    if (hdferr /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot open dataset "' // path // '" in ' // where)
+      return
+    end if
+    call h5dget_space_f(dset, space, hdferr)
+    if (hdferr == 0) then
+      call h5sget_dims(space, dims, maxdims, rank)
+      call h5sclose_f(space, hdferr)
+      if (rank /= 1) hdferr = -1
+    end if
+    if (hdferr == 0) then
+      had = int(dims(1))
+      if (n <= had) call h5dset_extent_f(dset, [int(n, hsize_t)], hdferr)
+    end if
+    call h5dclose_f(dset, rank)
+    if (hdferr /= 0 .or. rank /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot shorten dataset "' // path // '" in ' // where)
+    else if (n > had) then
+      call raise_error(err, EXIT_IO, 'dataset "' // path // '" in ' // where // ' has ' // &
+        trim(int_text(had)) // ' entries, fewer than the ' // trim(int_text(n)) // ' expected')
+    end if
+  end subroutine h5_truncate_growing
+
   ! --- attributes --------------------------------------------------------
 
   subroutine h5_attr_real(obj, name, value, where, err)
@@ -510,4 +547,10 @@ contains
       s = text
     end if
   end function padded
+
+  pure function int_text(n) result(s)
+    integer, intent(in) :: n
+    character(len=16) :: s
+    write(s, '(i0)') n
+  end function int_text
 end module raccord_h5

@@ -12,14 +12,15 @@
 !> close: path when complete, path with '.incomplete' before the extension
 !> otherwise (run.hist -> run.incomplete.hist).
 module raccord_history_file
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INTERNAL, EXIT_INPUT
   use raccord_strings, only: str
-  use raccord_files, only: rename_file, delete_file, make_directory
+  use raccord_files, only: rename_file, delete_file, make_directory, file_size, truncate_file, file_exists
   implicit none
   private
 
   public :: history_open, history_write, history_close, incomplete_name
+  public :: history_bytes, history_suspend, history_resume
 
   !> Width of one column: es24.16e3 (17 significant digits, enough to
   !> read back the same real64) plus a separating blank.
@@ -99,6 +100,62 @@ contains
     if (ios /= 0) call raise_error(err, EXIT_IO, 'cannot write a row to history file "' &
       // h%path // '.part" (disk full?)')
   end subroutine history_write
+
+  !> Bytes written so far to path.part (every row is flushed): where a
+  !> checkpoint records the file's end, so a resumed run can cut it there.
+  integer(i8) function history_bytes(h)
+    type(history_file_t), intent(in) :: h
+    history_bytes = -1
+    if (.not. h%is_open) return
+    history_bytes = file_size(h%path // '.part')
+  end function history_bytes
+
+  !> Close and keep the name path.part: the run stopped at a checkpoint
+  !> and history_resume goes on with the file.
+  subroutine history_suspend(h, err)
+    type(history_file_t), intent(inout) :: h
+    type(error_t), intent(inout) :: err
+    integer :: ios
+    character(len=256) :: msg
+    if (.not. h%is_open) return
+    close(h%unit, iostat=ios, iomsg=msg)
+    if (ios /= 0) call raise_error(err, EXIT_IO, 'cannot close history file "' // h%path // '.part": ' // trim(msg))
+    h = history_file_t()
+  end subroutine history_suspend
+
+  !> Reopen path.part of a stopped run, cut to `bytes` (its length at the
+  !> checkpoint: rows a killed run wrote later are dropped), to append.
+  subroutine history_resume(h, path, ncol, bytes, err)
+    type(history_file_t), intent(inout) :: h
+    character(len=*), intent(in) :: path
+    integer, intent(in) :: ncol
+    integer(i8), intent(in) :: bytes
+    type(error_t), intent(inout) :: err
+    integer :: ios
+    character(len=256) :: msg
+    if (err%failed()) return
+    h%path = trim(path)
+    h%ncol = ncol
+    if (.not. file_exists(h%path // '.part')) then
+      call raise_error(err, EXIT_INPUT, 'cannot resume: history file "' // h%path // '.part" is missing; ' // &
+        'run the scene afresh without --restart')
+      return
+    end if
+    if (file_size(h%path // '.part') < bytes) then
+      call raise_error(err, EXIT_INPUT, 'cannot resume: history file "' // h%path // '.part" is shorter than ' // &
+        'at the checkpoint; run the scene afresh without --restart')
+      return
+    end if
+    call truncate_file(h%path // '.part', bytes, err)
+    if (err%failed()) return
+    open(newunit=h%unit, file=h%path // '.part', status='old', position='append', action='write', &
+      form='formatted', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot reopen history file "' // h%path // '.part": ' // trim(msg))
+      return
+    end if
+    h%is_open = .true.
+  end subroutine history_resume
 
   !> Close and rename path.part to path (complete) or to its .incomplete
   !> name. Closing a file that is not open does nothing.

@@ -12,16 +12,20 @@
 !> results_begin_frame, results_write_nodal (per field), results_end_frame;
 !> results_write_array / _table / _node_set / results_set_text at any time
 !> while open; results_close last, also after an error.
+!> A run that stops at a checkpoint calls results_suspend instead (the file
+!> stays stem.h5.part); the restarted run calls results_resume in place of
+!> results_open and results_write_mesh, and goes on with the next frame.
 module raccord_results
-  use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fflush_f, h5gcreate_f, h5gclose_f, &
-    h5dopen_f, h5dclose_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F
+  use hdf5, only: hid_t, hsize_t, h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5gcreate_f, h5gclose_f, &
+    h5dopen_f, h5dclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, prefix_error, EXIT_IO, EXIT_INPUT, EXIT_INTERNAL
   use raccord_strings, only: str
-  use raccord_files, only: make_directory, rename_file, delete_file
-  use raccord_h5, only: h5_acquire, h5_release, h5_delete_link, &
+  use raccord_files, only: make_directory, rename_file, delete_file, file_exists
+  use raccord_h5, only: h5_acquire, h5_release, h5_delete_link, h5_link_exists, &
     h5_write_real, h5_write_int, h5_write_text, h5_attr_real, h5_attr_int, h5_attr_text, &
-    h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int
+    h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
+  use raccord_h5_read, only: h5_read_real, h5_read_attr_text, h5_dims
   use raccord_xdmf, only: xdmf_block_t, xdmf_field_t, xdmf_frame_t, write_xdmf, frame_label
   implicit none
   private
@@ -29,6 +33,7 @@ module raccord_results
   public :: results_open, results_write_mesh, results_write_node_set
   public :: results_begin_frame, results_write_nodal, results_end_frame
   public :: results_write_array, results_write_table, results_set_text, results_close
+  public :: results_suspend, results_resume, results_has, results_delete, results_flush
 
   !> Version of the file layout, stored as the root attribute format_version;
   !> bump it when doc/output-format.md changes incompatibly.
@@ -263,25 +268,16 @@ contains
         // str(res%nnode) // ')')
       return
     end if
-    field%name = trim(name)
-    field%path = '/frames/' // frame_label(res%nframe - 1) // '/' // field%name
+    field = nodal_field(name, ncomp, res%nframe - 1)
     select case (ncomp)
     case (1)
-      field%kind = 'Scalar'
-      field%ncomp = 1
       call h5_write_real(res%file, field%path, values(1, :), res%where, err)
     case (2)
-      field%kind = 'Vector'
-      field%ncomp = 3
       allocate(padded(3, res%nnode))
       padded(1:2, :) = values
       padded(3, :) = 0.0_wp
       call h5_write_real(res%file, field%path, padded, res%where, err)
     case default
-      ! Matrix: a plain multi-component array; stress (sxx, syy, sxy, szz)
-      ! is neither a 3-vector nor a full tensor.
-      field%kind = 'Matrix'
-      field%ncomp = ncomp
       call h5_write_real(res%file, field%path, values, res%where, err)
     end select
     if (err%failed()) return
@@ -299,6 +295,172 @@ contains
       fr%fields(fr%nfield) = field
     end associate
   end subroutine results_write_nodal
+
+  !> How a nodal field of ncomp components is stored in frame `frame`
+  !> (0-based): path, XDMF kind, stored components.
+  pure function nodal_field(name, ncomp, frame) result(field)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: ncomp, frame
+    type(xdmf_field_t) :: field
+    field%name = trim(name)
+    field%path = '/frames/' // frame_label(frame) // '/' // field%name
+    select case (ncomp)
+    case (1)
+      field%kind = 'Scalar'
+      field%ncomp = 1
+    case (2)
+      field%kind = 'Vector'
+      field%ncomp = 3
+    case default
+      ! Matrix: a plain multi-component array; stress (sxx, syy, sxy, szz)
+      ! is neither a 3-vector nor a full tensor.
+      field%kind = 'Matrix'
+      field%ncomp = ncomp
+    end select
+  end function nodal_field
+
+  !> Stop writing for now: /status = reason (e.g. 'suspended at step N'),
+  !> flush and close, and keep the name stem.h5.part so that the file never
+  !> looks complete. results_resume goes on with it.
+  subroutine results_suspend(res, reason, err)
+    type(results_t), intent(inout) :: res
+    character(len=*), intent(in) :: reason
+    type(error_t), intent(inout) :: err
+    type(error_t) :: cerr
+    integer :: hdferr
+    if (.not. res%is_open) return
+    if (res%in_frame) call results_end_frame(res, cerr)
+    call results_set_text(res, 'status', reason, cerr)
+    call flush_file(res, 'the status', cerr)
+    call h5fclose_f(res%file, hdferr)
+    if (hdferr /= 0) call raise_error(cerr, EXIT_IO, 'cannot close ' // res%where // ' (disk full?)')
+    res%is_open = .false.
+    call h5_release(cerr)
+    if (cerr%failed()) call raise_error(err, cerr%code, cerr%message)
+    res = results_t()
+  end subroutine results_suspend
+
+  !> Reopen stem.h5.part of a suspended or killed run and go on with it, in
+  !> place of results_open and results_write_mesh: keep its first nframe
+  !> frames and drop any later one (written after the checkpoint the run
+  !> resumes from), rebuild the record the XDMF needs (the mesh blocks as
+  !> results_write_mesh got them; each frame with the nodal fields named in
+  !> fields(:) with ncomps(:) components, as results_write_nodal got them),
+  !> and set /status back to 'running'. A missing or unreadable file is
+  !> EXIT_INPUT: the checkpoint cannot be used without it.
+  subroutine results_resume(res, stem, nnode, blocks, fields, ncomps, nframe, err)
+    type(results_t), intent(inout) :: res
+    character(len=*), intent(in) :: stem
+    integer, intent(in) :: nnode
+    type(result_block_t), intent(in) :: blocks(:)
+    character(len=*), intent(in) :: fields(:)
+    integer, intent(in) :: ncomps(:), nframe
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: fmt
+    integer(hsize_t), allocatable :: dims(:)
+    real(wp), allocatable :: times(:)
+    integer :: hdferr, had, f, k, b
+    if (err%failed()) return
+    if (res%is_open) then
+      call raise_error(err, EXIT_INTERNAL, 'results_resume: results file "' // res%part_name // '" is already open')
+      return
+    end if
+    res = results_t()
+    res%stem = trim(stem)
+    res%part_name = res%stem // '.h5.part'
+    res%where = 'results file "' // res%part_name // '"'
+    if (.not. file_exists(res%part_name)) then
+      call raise_error(err, EXIT_INPUT, 'cannot resume: ' // res%where // ' is missing (deleted, or the run ' // &
+        'was started again); run the scene afresh without --restart')
+      return
+    end if
+    call h5_acquire(err)
+    if (err%failed()) return
+    call h5fopen_f(res%part_name, H5F_ACC_RDWR_F, res%file, hdferr)
+    if (hdferr /= 0) then
+      call raise_error(err, EXIT_INPUT, 'cannot reopen ' // res%where // ' to resume (not HDF5, or damaged ' // &
+        'by a hard kill while it was written); run the scene afresh without --restart')
+      call h5_release(err)
+      return
+    end if
+    res%is_open = .true.
+    allocate(res%blocks(size(blocks)), res%frames(max(8, nframe + 8)))
+    ! Checks before any change: a refused file is closed untouched.
+    call h5_read_attr_text(res%file, 'format', fmt, res%where, err)
+    if (.not. err%failed()) then
+      if (fmt /= 'raccord results') call raise_error(err, EXIT_INPUT, res%where // &
+        ' is not a raccord results file (format "' // fmt // '")')
+    end if
+    if (.not. err%failed()) call h5_dims(res%file, '/mesh/x', dims, res%where, err)
+    if (.not. err%failed()) then
+      if (size(dims) /= 2) dims = [0_hsize_t, 0_hsize_t]
+      if (dims(2) /= int(nnode, hsize_t)) call raise_error(err, EXIT_INPUT, res%where // ' holds a mesh of ' // &
+        str(int(dims(2))) // ' nodes, the model has ' // str(nnode) // '; it belongs to another run')
+    end if
+    if (err%failed()) then
+      call h5fclose_f(res%file, hdferr)
+      call h5_release(err)
+      res = results_t()
+      return
+    end if
+    res%nnode = nnode
+    do b = 1, size(blocks)
+      res%blocks(b)%name = blocks(b)%name
+      res%blocks(b)%conn_path = '/mesh/blocks/' // blocks(b)%name // '/connectivity'
+      res%blocks(b)%nen = blocks(b)%nen
+      res%blocks(b)%nel = size(blocks(b)%conn, 2)
+    end do
+    ! Frames: keep 0 .. nframe-1, drop the later ones (also a half-written one).
+    call h5_truncate_growing(res%file, '/frames/times', nframe, had, res%where, err)
+    call h5_truncate_growing(res%file, '/frames/steps', nframe, had, res%where, err)
+    if (err%failed()) return
+    f = nframe
+    do while (h5_link_exists(res%file, '/frames/' // frame_label(f)))
+      call h5_delete_link(res%file, '/frames/' // frame_label(f), res%where, err)
+      if (err%failed()) return
+      f = f + 1
+    end do
+    allocate(times(nframe))
+    call h5_read_real(res%file, '/frames/times', times, res%where, err)
+    if (err%failed()) return
+    do f = 1, nframe
+      res%frames(f)%time = times(f)
+      res%frames(f)%nfield = size(fields)
+      allocate(res%frames(f)%fields(max(4, size(fields))))
+      do k = 1, size(fields)
+        res%frames(f)%fields(k) = nodal_field(fields(k), ncomps(k), f - 1)
+      end do
+    end do
+    res%nframe = nframe
+    call results_set_text(res, 'status', 'running', err)
+    call flush_file(res, 'the resumed file', err)
+  end subroutine results_resume
+
+  !> Flush everything written so far to disk (before a checkpoint).
+  subroutine results_flush(res, err)
+    type(results_t), intent(in) :: res
+    type(error_t), intent(inout) :: err
+    if (.not. usable(res, 'results_flush', err)) return
+    call flush_file(res, 'the results', err)
+  end subroutine results_flush
+
+  !> True when an object exists at `path` in the open file.
+  logical function results_has(res, path)
+    type(results_t), intent(in) :: res
+    character(len=*), intent(in) :: path
+    results_has = .false.
+    if (.not. res%is_open) return
+    results_has = h5_link_exists(res%file, absolute(path))
+  end function results_has
+
+  !> Remove the object at `path` (nothing if there is none).
+  subroutine results_delete(res, path, err)
+    type(results_t), intent(inout) :: res
+    character(len=*), intent(in) :: path
+    type(error_t), intent(inout) :: err
+    if (.not. usable(res, 'results_delete', err)) return
+    call h5_delete_link(res%file, absolute(path), res%where, err)
+  end subroutine results_delete
 
   !> End the current frame: append its time and step to /frames/times and
   !> /frames/steps (so they list completed frames) and flush the file.

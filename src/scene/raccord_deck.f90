@@ -20,10 +20,12 @@ module raccord_deck
   use raccord_strings, only: str, lower
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
   use raccord_deck_scan, only: deck_block_t, scan_deck, join_names
-  use raccord_deck_checks, only: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
+  use raccord_deck_checks, only: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite, &
+    UNSET
+  use raccord_deck_run, only: read_run, read_time, read_output
   use raccord_deck_write, only: write_scene, real_text
-  use raccord_scene, only: scene_t, run_spec_t, mesh_spec_t, body_spec_t, bc_spec_t, amplitude_spec_t, &
-    time_spec_t, output_spec_t, contact_spec_t, MAX_TABLE, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, &
+  use raccord_scene, only: scene_t, mesh_spec_t, body_spec_t, bc_spec_t, amplitude_spec_t, &
+    contact_spec_t, MAX_TABLE, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, &
     BC_PRESSURE, METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0, MULT_DUAL
   implicit none
   private
@@ -36,22 +38,15 @@ module raccord_deck
   logical, parameter :: SINGLE(*) = [.true., .true., .false., .false., .false., .true., .true., .false.]
 
   !> Keys of each group, in the order the documentation and the echo use.
-  character(len=*), parameter :: RUN_KEYS(*) = [character(len=16) :: 'title', 'output_dir']
   character(len=*), parameter :: MESH_KEYS(*) = [character(len=16) :: 'file', 'format', 'scale']
   character(len=*), parameter :: BODY_KEYS(*) = [character(len=16) :: 'name', 'elset', 'young', 'poisson', &
     'density', 'hypothesis', 'thickness', 'velocity', 'body_force', 'damping']
   character(len=*), parameter :: BC_KEYS(*) = [character(len=16) :: 'set', 'type', 'components', 'value', &
     'pressure', 'amplitude']
   character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
-  character(len=*), parameter :: TIME_KEYS(*) = [character(len=16) :: 't_end', 'dt', 'safety', 'damping']
-  character(len=*), parameter :: OUTPUT_KEYS(*) = [character(len=16) :: 'frames', 'history_every', &
-    'progress_seconds', 'stress']
   character(len=*), parameter :: CONTACT_KEYS(*) = [character(len=16) :: 'slave', 'master', 'method', &
     'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations']
 
-
-  !> Sentinel of required real keys: no deck sets a real to -huge.
-  real(wp), parameter :: UNSET = -huge(1.0_wp)
 
 contains
 
@@ -223,43 +218,6 @@ contains
 
   ! ---------------------------------------------------------------- groups
 
-  !> &run title, output_dir.
-  subroutine read_run(deck, blk, stem, spec, err)
-    character(len=*), intent(in) :: deck, stem
-    type(deck_block_t), intent(in) :: blk
-    type(run_spec_t), intent(inout) :: spec
-    type(error_t), intent(inout) :: err
-    character(len=path_len) :: title, output_dir
-    namelist /run/ title, output_dir
-    character(len=:), allocatable :: record
-    character(len=256) :: msg
-    integer :: k, ios
-
-    title = stem
-    output_dir = ''
-    call check_keys(deck, blk, RUN_KEYS, '', err)
-    if (err%failed()) return
-    do k = 1, size(blk%keys)
-      record = blk%item(k)
-      msg = ''
-      read(record, nml=run, iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-        call unreadable(deck, blk, k, '', msg, err)
-        return
-      end if
-    end do
-    call check_length(deck, blk, '', 'title', title, err)
-    call check_length(deck, blk, '', 'output_dir', output_dir, err)
-    if (err%failed()) return
-    spec%title = trim(title)
-    ! Batch convention: a relative output folder is relative to the current
-    ! directory (where the job runs), not to the deck.
-    if (len_trim(output_dir) == 0) then
-      spec%output_dir = 'results/' // stem
-    else
-      spec%output_dir = trim(output_dir)
-    end if
-  end subroutine read_run
 
   !> &mesh file, format, scale.
   subroutine read_mesh(deck, blk, dir, spec, err)
@@ -647,106 +605,7 @@ contains
     end do
   end function table_length
 
-  !> &time t_end, dt, safety, damping.
-  subroutine read_time(deck, blk, spec, err)
-    character(len=*), intent(in) :: deck
-    type(deck_block_t), intent(in) :: blk
-    type(time_spec_t), intent(out) :: spec
-    type(error_t), intent(inout) :: err
-    real(wp) :: t_end, dt, safety, damping
-    namelist /time/ t_end, dt, safety, damping
-    character(len=:), allocatable :: record
-    character(len=256) :: msg
-    integer :: k, ios
 
-    t_end = UNSET
-    dt = spec%dt
-    safety = spec%safety
-    damping = spec%damping
-    call check_keys(deck, blk, TIME_KEYS, '', err)
-    if (err%failed()) return
-    do k = 1, size(blk%keys)
-      record = blk%item(k)
-      msg = ''
-      read(record, nml=time, iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-        call unreadable(deck, blk, k, '', msg, err)
-        return
-      end if
-    end do
-    call check_finite(deck, blk, '', [character(len=8) :: 't_end', 'dt', 'safety', 'damping'], &
-      [t_end, dt, safety, damping], err)
-    if (err%failed()) return
-
-    if (t_end == UNSET) then
-      call missing_key(deck, blk, '', 't_end', 't_end = <end time> (> 0)', err)
-    else if (.not. (t_end > 0.0_wp)) then
-      call bad_value(deck, blk, '', 't_end', 'the end time must be > 0', 'give the duration of the run', err)
-    else if (.not. (dt >= 0.0_wp)) then
-      call bad_value(deck, blk, '', 'dt', 'the time step must be >= 0', &
-        'give a fixed step, or dt = 0 for safety times the stable step', err)
-    else if (.not. (safety > 0.0_wp .and. safety <= 1.0_wp)) then
-      call bad_value(deck, blk, '', 'safety', 'the safety factor must lie in (0, 1]', &
-        'use e.g. safety = 0.9 (above 1 the explicit scheme is unstable)', err)
-    else if (.not. (damping >= 0.0_wp)) then
-      call bad_value(deck, blk, '', 'damping', 'the damping must be >= 0', &
-        'give a mass-proportional damping alpha in 1/time, or 0 for none', err)
-    end if
-    if (err%failed()) return
-    spec%t_end = t_end
-    spec%dt = dt
-    spec%safety = safety
-    spec%damping = damping
-  end subroutine read_time
-
-  !> &output frames, history_every, progress_seconds, stress.
-  subroutine read_output(deck, blk, spec, err)
-    character(len=*), intent(in) :: deck
-    type(deck_block_t), intent(in) :: blk
-    type(output_spec_t), intent(out) :: spec
-    type(error_t), intent(inout) :: err
-    integer :: frames, history_every
-    real(wp) :: progress_seconds
-    logical :: stress
-    namelist /output/ frames, history_every, progress_seconds, stress
-    character(len=:), allocatable :: record
-    character(len=256) :: msg
-    integer :: k, ios
-
-    frames = spec%frames
-    history_every = spec%history_every
-    progress_seconds = spec%progress_seconds
-    stress = spec%stress
-    call check_keys(deck, blk, OUTPUT_KEYS, '', err)
-    if (err%failed()) return
-    do k = 1, size(blk%keys)
-      record = blk%item(k)
-      msg = ''
-      read(record, nml=output, iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-        call unreadable(deck, blk, k, '', msg, err)
-        return
-      end if
-    end do
-    call check_finite(deck, blk, '', ['progress_seconds'], [progress_seconds], err)
-    if (err%failed()) return
-
-    if (frames < 0) then
-      call bad_value(deck, blk, '', 'frames', 'the number of frames must be >= 0', &
-        'give how many result frames to write over the run (0 = the initial state only)', err)
-    else if (history_every < 0) then
-      call bad_value(deck, blk, '', 'history_every', 'the history interval must be >= 0', &
-        'give the number of steps between history lines, or 0 for about 1000 lines', err)
-    else if (.not. (progress_seconds >= 0.0_wp)) then
-      call bad_value(deck, blk, '', 'progress_seconds', 'the progress interval must be >= 0', &
-        'give the wall-clock seconds between progress lines', err)
-    end if
-    if (err%failed()) return
-    spec%frames = frames
-    spec%history_every = history_every
-    spec%progress_seconds = progress_seconds
-    spec%stress = stress
-  end subroutine read_output
 
   !> &contact_pair slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations.
   subroutine read_contact(deck, blk, spec, err)

@@ -18,6 +18,9 @@ module raccord_deck_checks
 
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
 
+  !> Sentinel of required real keys: no deck sets a real to -huge.
+  real(wp), parameter, public :: UNSET = -huge(1.0_wp)
+
 contains
 
   !> "<deck>:<line>: &<group> '<label>'", the head of every message on a group.

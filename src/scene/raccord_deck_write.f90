@@ -39,6 +39,8 @@ contains
     call put(unit, '&run', ios, msg)
     call put_text(unit, 'title', text_or_empty(scene%run%title), ios, msg)
     call put_text(unit, 'output_dir', text_or_empty(scene%run%output_dir), ios, msg)
+    call put(unit, '  wall_clock = ' // real_text(scene%run%wall_clock), ios, msg)
+    call put(unit, '  checkpoint_every = ' // str(scene%run%checkpoint_every), ios, msg)
     call put(unit, '/', ios, msg)
 
     call put(unit, '&mesh', ios, msg)

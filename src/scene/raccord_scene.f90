@@ -14,10 +14,13 @@ module raccord_scene
 
   integer, parameter, public :: MAX_TABLE = 256   !< most points of an amplitude table
 
-  !> &run: what the run is called and where results go.
+  !> &run: what the run is called, where results go, and when it stops to
+  !> write a checkpoint (doc/hpc.md, section 10).
   type, public :: run_spec_t
     character(len=:), allocatable :: title
     character(len=:), allocatable :: output_dir     !< folder for results and log (resolved)
+    real(wp) :: wall_clock = 0.0_wp                 !< wall seconds before checkpoint and exit 5; 0 = none
+    integer :: checkpoint_every = 0                 !< steps between checkpoints; 0 = none
   end type run_spec_t
 
   !> &mesh: the mesh file.

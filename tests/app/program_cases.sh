@@ -92,7 +92,7 @@ help)
     run "$opt"
     expect_code 0
     expect_text "$work/stdout.txt" 'usage: raccord [options] SCENE' "stdout of $opt"
-    for word in --check --output --quiet --verbose --version 'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure'; do
+    for word in --check --output --quiet --verbose --version --wall-clock --restart 'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure'; do
       expect_text "$work/stdout.txt" "$word" "stdout of $opt"
     done
   done

@@ -3,7 +3,7 @@
 #
 #   sh hpc_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
 #
-# CASE        subst, errors, local, bad_case (and sweep-collect.sh), kill, array, exit_codes
+# CASE        subst, errors, local, bad_case (and sweep-collect.sh), kill, array, exit_codes, restart
 # RACCORD     the raccord executable (real runs and --check)
 # SOURCE_DIR  the repository (hpc/ and tests/data/app/bar_coarse.msh)
 # WORK_DIR    a folder of this case alone, emptied first
@@ -95,7 +95,7 @@ bar_sweep() { # file line...
 # to <stem>.h5 (exit 0) or <stem>.incomplete.h5. The exit code of run k of a
 # folder is word k of STUB_EXIT (the last word for later runs). A deck
 # containing SLOW sleeps STUB_SLEEP s first; with STUB_CHECKPOINT=1 it takes
-# USR1 as "write a checkpoint and exit 5".
+# USR1 and TERM as "write <stem>.checkpoint.h5 and exit 5", as raccord does.
 stub_raccord() {
   cat > "$work/bin/raccord" <<'EOF'
 #!/bin/sh
@@ -114,15 +114,21 @@ echo "$n" > "$out/stub.count"
 echo "run $n: $args wall=${RACCORD_WALLCLOCK_SECONDS:-none} omp=${OMP_NUM_THREADS:-none}" >> "$out/stub.log"
 code=$(echo "${STUB_EXIT:-0}" | awk -v n="$n" '{ print (n <= NF ? $n : $NF) }')
 : > "$out/$stem.h5.part"
-echo $$ > "$out/stub.pid"
 if grep -q SLOW "$deck"; then
-  sleep "${STUB_SLEEP:-0}" &
-  s=$!
+  # Traps first, then the pid file the tests wait for: a signal sent once
+  # the pid file exists finds the traps in place.
+  s=
   trap 'kill $s 2>/dev/null; exit 143' TERM
   if [ "${STUB_CHECKPOINT:-0}" = 1 ]; then
-    trap 'echo usr1 >> "$out/stub.signals"; kill $s 2>/dev/null; mv "$out/$stem.h5.part" "$out/$stem.checkpoint"; exit 5' USR1
+    trap 'echo usr1 >> "$out/stub.signals"; kill $s 2>/dev/null; : > "$out/$stem.checkpoint.h5"; exit 5' USR1
+    trap 'echo term >> "$out/stub.signals"; kill $s 2>/dev/null; : > "$out/$stem.checkpoint.h5"; exit 5' TERM
   fi
+  sleep "${STUB_SLEEP:-0}" &
+  s=$!
+  echo $$ > "$out/stub.pid"
   wait $s
+else
+  echo $$ > "$out/stub.pid"
 fi
 if [ "$code" = 0 ]; then mv "$out/$stem.h5.part" "$out/$stem.h5"; else mv "$out/$stem.h5.part" "$out/$stem.incomplete.h5"; fi
 exit "$code"
@@ -440,7 +446,31 @@ exit_codes)
   code=$?
   cat usr1.out
   check "USR1 with checkpoint support: raccord got it, job exit 5, requeued" \
-    sh -c "[ $code -eq 5 ] && grep -q usr1 out-usr1/stub.signals && [ -e out-usr1/slow.checkpoint ] && grep -qx 'requeue 4343' scontrol.calls"
+    sh -c "[ $code -eq 5 ] && grep -q usr1 out-usr1/stub.signals && [ -e out-usr1/slow.checkpoint.h5 ] && grep -qx 'requeue 4343' scontrol.calls"
+  # The requeued job goes on from the checkpoint (raccord --restart).
+  env SLURM_JOB_ID=4343 SLURM_RESTART_COUNT=1 STUB_CHECKPOINT=1 sh "$hpc/slurm/raccord-one.sbatch" slow.nml out-usr1 > usr1b.out 2>&1
+  code=$?
+  cat usr1b.out
+  check "requeued job: raccord --restart out-usr1/slow.checkpoint.h5, complete" \
+    sh -c "[ $code -eq 0 ] && grep -q 'run 2: .*--restart out-usr1/slow.checkpoint.h5 --output' out-usr1/stub.log && [ -e out-usr1/slow.h5 ]"
+  # A deck rewritten after the checkpoint starts the case again.
+  mkdir -p out-newer && : > out-newer/slow.checkpoint.h5 && sleep 1 && printf '! deck SLOW, rewritten\n' > newer.nml
+  cp out-newer/slow.checkpoint.h5 out-newer/keep && touch -r out-newer/keep out-newer/slow.checkpoint.h5
+  env SLURM_JOB_ID=4545 STUB_CHECKPOINT=1 sh "$hpc/slurm/raccord-one.sbatch" newer.nml out-newer > newer.out 2>&1
+  check "checkpoint older than the deck: no --restart" hasnt out-newer/stub.log "--restart"
+  # SIGTERM (Slurm at the time limit) to the job shell: passed on; a raccord
+  # with checkpoints writes one and exits 5, and the job is requeued.
+  rm -f scontrol.calls
+  env SLURM_JOB_ID=4646 STUB_CHECKPOINT=1 STUB_SLEEP=30 sh "$hpc/slurm/raccord-one.sbatch" slow.nml out-term > term.out 2>&1 &
+  jpid=$!
+  wait_for out-term/stub.pid 20
+  sleep 0.3
+  kill -TERM "$jpid"
+  wait "$jpid"
+  code=$?
+  cat term.out
+  check "TERM with checkpoint support: job exit 5, checkpoint, requeued" \
+    sh -c "[ $code -eq 5 ] && grep -q term out-term/stub.signals && [ -e out-term/slow.checkpoint.h5 ] && grep -qx 'requeue 4646' scontrol.calls"
   # ... and not to an older raccord, which would die of it.
   env SLURM_JOB_ID=4444 STUB_SLEEP=2 sh "$hpc/slurm/raccord-one.sbatch" slow.nml out-usr1old > usr1old.out 2>&1 &
   jpid=$!
@@ -452,6 +482,34 @@ exit_codes)
   cat usr1old.out
   check "USR1 without checkpoint support: ignored, the run completes" \
     sh -c "[ $code -eq 0 ] && [ -e out-usr1old/slow.h5 ] && grep -q 'SIGUSR1 ignored' usr1old.out"
+  ;;
+
+restart)
+  # The real raccord through run-case.sh: a limit shorter than the setup
+  # stops it at the first step with a checkpoint (exit 5); the next attempt
+  # goes on from it and completes, with the results of an uninterrupted run.
+  sed "s|'bar_coarse.msh'|'$work/data/bar_coarse.msh'|" "$src/tests/data/app/bar_coarse.nml" > bar.nml
+  RACCORD_WALLCLOCK_SECONDS=0.001 sh "$hpc/run-case.sh" -r "$raccord" -d bar.nml out-a > a1.out 2>&1
+  code=$?
+  cat a1.out
+  check "run-case with a 0.001 s limit: exit 5, checkpoint, not complete" \
+    sh -c "[ $code -eq 5 ] && [ -e out-a/bar.checkpoint.h5 ] && [ ! -e out-a/bar.h5 ] && grep -q 'checkpoint written' a1.out"
+  sh "$hpc/run-case.sh" -r "$raccord" -d bar.nml out-a > a2.out 2>&1
+  code=$?
+  cat a2.out
+  check "next attempt: goes on from the checkpoint, done" \
+    sh -c "[ $code -eq 0 ] && grep -q 'going on from out-a/bar.checkpoint.h5' a2.out && grep -q 'done' a2.out"
+  check "attempts.txt records run 5 then restart 0" \
+    sh -c "grep -q 'stage=run exit=5' out-a/attempts.txt && grep -q 'stage=restart exit=0' out-a/attempts.txt"
+  sh "$hpc/run-case.sh" -r "$raccord" -d bar.nml out-b > b.out 2>&1
+  check "the same case without a stop: done" grep -q done b.out
+  for f in bar.history.txt bar.xmf; do
+    check "$f of the restarted case equals the uninterrupted one's" cmp -s out-a/$f out-b/$f
+  done
+  if command -v h5diff > /dev/null 2>&1; then
+    check "bar.h5 of the restarted case equals the uninterrupted one's (h5diff)" \
+      h5diff --exclude-path /scene --exclude-path /scene_path out-a/bar.h5 out-b/bar.h5
+  fi
   ;;
 
 *)

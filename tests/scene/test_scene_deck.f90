@@ -96,7 +96,9 @@ program test_scene_deck
       new_test('bad: friction negative', bad_friction_negative), &
       new_test('bad: tolerance nonpositive', bad_tolerance_nonpositive), &
       new_test('bad: max iterations zero', bad_max_iterations_zero), &
-      new_test('bad: overflowing value', bad_overflowing_value) &
+      new_test('bad: overflowing value', bad_overflowing_value), &
+      new_test('bad: run wall_clock negative', bad_wall_clock_negative), &
+      new_test('bad: run checkpoint_every negative', bad_checkpoint_every_negative) &
       ])
 
 contains
@@ -217,6 +219,8 @@ contains
     integer :: k
     call check_text(failure, b%run%title, a%run%title, 'run%title')
     call check_text(failure, b%run%output_dir, a%run%output_dir, 'run%output_dir')
+    call check(failure, b%run%wall_clock == a%run%wall_clock, 'run%wall_clock differs')
+    call check(failure, b%run%checkpoint_every == a%run%checkpoint_every, 'run%checkpoint_every differs')
     call check_text(failure, b%mesh%file, a%mesh%file, 'mesh%file')
     call check_text(failure, b%mesh%format, a%mesh%format, 'mesh%format')
     call check(failure, b%mesh%scale == a%mesh%scale, 'mesh%scale differs')
@@ -308,6 +312,8 @@ contains
     call check_text(failure, s%dir, data // '/decks', 'dir')
     call check_text(failure, s%run%title, 'disc / block ! sliding', 'run%title')
     call check_text(failure, s%run%output_dir, 'out/full', 'run%output_dir')
+    call check_close(failure, s%run%wall_clock, 7200.5_wp, 'run%wall_clock')
+    call check(failure, s%run%checkpoint_every == 250, 'run%checkpoint_every')
     call check_text(failure, s%mesh%file, data // '/decks/meshes/disc_block.msh', 'mesh%file')
     call check_text(failure, s%mesh%format, 'gmsh', 'mesh%format')
     call check_close(failure, s%mesh%scale, 2.5_wp, 'mesh%scale')
@@ -555,6 +561,26 @@ contains
     if (allocated(failure)) return
     call check(failure, index(err%message, 'scene_no_such_deck.nml') > 0, 'message lacks the path: ' // err%message)
   end subroutine test_missing_deck_file
+
+  subroutine bad_wall_clock_negative(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'wall_clock_negative', &
+      "&run wall_clock = -60.0 /" // NL // &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0 /", &
+      1, [character(len=FRAG_LEN) :: "&run", "'wall_clock'", "must be >= 0", "0 for no limit"])
+  end subroutine bad_wall_clock_negative
+
+  subroutine bad_checkpoint_every_negative(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'checkpoint_every_negative', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&run checkpoint_every = -1 /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0 /", &
+      2, [character(len=FRAG_LEN) :: "&run", "'checkpoint_every'", "must be >= 0", "0 for none"])
+  end subroutine bad_checkpoint_every_negative
 
   subroutine bad_unknown_group(failure)
     type(failure_t), allocatable, intent(out) :: failure

@@ -1,0 +1,356 @@
+!> Checkpoint of a run: everything the time loop needs to go on from a step
+!> boundary as if it had never stopped, in <stem>.checkpoint.h5 (layout in
+!> doc/output-format.md, "Checkpoint file").
+!>
+!> The checkpoint is taken after advance_state, at the start of step n, when
+!> the state of the explicit scheme is u(n), u(n-1) and v(n-1/2) (the rest
+!> of state_t is recomputed by the step from these and the model: forces,
+!> predictor, reactions, amplitudes), the running energy account (E-1, E-2),
+!> and of each contact pair the status and slip direction of every slave
+!> node, which warm-start the next multiplier solve (the sets of paper
+!> eq. 19), plus its convergence counters. The outputs are recorded by
+!> where they stand (output_mark_t). Reals are stored as IEEE doubles, so
+!> a restart continues with bit-identical data.
+!>
+!> The file is written as <stem>.checkpoint.h5.part and renamed, so a
+!> checkpoint that exists is complete; a killed write leaves the previous
+!> checkpoint in place.
+module raccord_checkpoint
+  use hdf5, only: hid_t, h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F
+  use raccord_kinds, only: wp, i8
+  use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
+  use raccord_strings, only: str
+  use raccord_log, only: log_warn
+  use raccord_version, only: raccord_version_string
+  use raccord_scene, only: scene_t
+  use raccord_deck, only: write_scene
+  use raccord_paths, only: absolute_path
+  use raccord_state, only: state_t
+  use raccord_contact_pair, only: contact_pair_t
+  use raccord_output, only: output_mark_t
+  use raccord_files, only: rename_file, delete_file, file_exists
+  use raccord_h5, only: h5_acquire, h5_release, h5_write_real, h5_write_int, h5_write_text, h5_attr_text, &
+    h5_attr_int, h5_link_exists
+  use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8
+  implicit none
+  private
+
+  public :: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path, scene_identity
+
+  !> Version of the checkpoint layout; a checkpoint of another version is refused.
+  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 1
+  character(len=*), parameter :: FORMAT_NAME = 'raccord checkpoint'
+  !> Keys that do not change the results: a restart may change them.
+  character(len=*), parameter :: FREE_KEYS(*) = [character(len=20) :: 'output_dir', 'wall_clock', &
+    'checkpoint_every', 'progress_seconds']
+
+contains
+
+  !> <stem>.checkpoint.h5
+  pure function checkpoint_name(stem) result(path)
+    character(len=*), intent(in) :: stem
+    character(len=:), allocatable :: path
+    path = stem // '.checkpoint.h5'
+  end function checkpoint_name
+
+  !> The resolved scene as a restart compares it: the echo of write_scene
+  !> without comments and without the keys that do not change the results
+  !> (output_dir, wall_clock, checkpoint_every, progress_seconds).
+  function scene_identity(scene, err) result(text)
+    type(scene_t), intent(in) :: scene
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: text
+    integer :: unit, ios, k
+    character(len=1024) :: line
+    character(len=256) :: msg
+    logical :: keep
+    text = ''
+    open(newunit=unit, status='scratch', action='readwrite', form='formatted', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot open a scratch file for the scene echo: ' // trim(msg))
+      return
+    end if
+    call write_scene(scene, unit, err)
+    rewind(unit)
+    do
+      read(unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      keep = len_trim(line) > 0
+      if (keep) keep = line(1:1) /= '!'
+      do k = 1, size(FREE_KEYS)
+        if (index(adjustl(line), trim(FREE_KEYS(k)) // ' =') == 1) keep = .false.
+      end do
+      if (keep) text = text // trim(line) // new_line('a')
+    end do
+    close(unit)
+  end function scene_identity
+
+  !> Write <stem>.checkpoint.h5 (via .part and rename).
+  subroutine write_checkpoint(stem, scene, state, pairs, mark, err)
+    character(len=*), intent(in) :: stem
+    type(scene_t), intent(in) :: scene
+    type(state_t), intent(in) :: state
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(output_mark_t), intent(in) :: mark
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: part, where, identity, g
+    integer(hid_t) :: file
+    integer :: hdferr, k
+    type(error_t) :: cerr
+
+    if (err%failed()) return
+    identity = scene_identity(scene, err)
+    if (err%failed()) return
+    part = checkpoint_name(stem) // '.part'
+    where = 'checkpoint "' // part // '"'
+    call h5_acquire(err)
+    if (err%failed()) return
+    call h5fcreate_f(part, H5F_ACC_TRUNC_F, file, hdferr)
+    if (hdferr /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot create ' // where // '; check that the folder is writable')
+      call h5_release(err)
+      return
+    end if
+    call h5_attr_text(file, 'format', FORMAT_NAME, where, err)
+    call h5_attr_int(file, 'format_version', CHECKPOINT_FORMAT_VERSION, where, err)
+    call h5_attr_text(file, 'raccord_version', raccord_version_string, where, err)
+    call h5_write_text(file, '/scene', identity, where, err)
+    call h5_write_text(file, '/scene_path', absolute_path(scene%path), where, err)
+    ! The scheme's state at the start of step n.
+    call h5_write_i8(file, '/state/counters', [state%step, state%nsteps], where, err)
+    call h5_write_real(file, '/state/time_dt', [state%time, state%dt], where, err)
+    call h5_write_real(file, '/state/u', state%u, where, err)
+    call h5_write_real(file, '/state/u_prev', state%u_prev, where, err)
+    call h5_write_real(file, '/state/v', state%v, where, err)
+    associate (e => state%energy)
+      call h5_write_real(file, '/state/energy', [e%kinetic, e%internal, e%discrete, e%external, e%damping, &
+        e%contact, e%friction, e%initial, e%balance, e%scale], where, err)
+    end associate
+    ! Contact: the sets that warm-start the next solve, and the counters.
+    do k = 1, size(pairs)
+      g = '/contact/pair_' // str(k) // '/'
+      call h5_write_int(file, g // 'status', pairs(k)%status, where, err)
+      call h5_write_real(file, g // 'sigma', pairs(k)%sigma, where, err)
+      call h5_write_i8(file, g // 'counters', [int(pairs(k)%failed_streak, i8), pairs(k)%failed_total, &
+        pairs(k)%iterations_total, pairs(k)%steps], where, err)
+      call h5_write_real(file, g // 'residual_max', [pairs(k)%residual_max], where, err)
+      call h5_write_i8(file, g // 'profile_bytes', [mark%profile_bytes(k)], where, err)
+    end do
+    ! Outputs: frames and history rows so far, and the files' lengths.
+    call h5_write_i8(file, '/output/counters', [int(mark%frames_written, i8), int(mark%nrow, i8), &
+      mark%history_bytes], where, err)
+    call h5_write_real(file, '/output/history_table', mark%table, where, err)
+    call h5fclose_f(file, hdferr)
+    if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close ' // where // ' (disk full?)')
+    call h5_release(cerr)
+    if (err%failed()) then
+      call delete_file(part)
+      return
+    end if
+    call rename_file(part, checkpoint_name(stem), err)
+  end subroutine write_checkpoint
+
+  !> The absolute path of the deck a checkpoint was written for.
+  subroutine checkpoint_scene_path(path, scene_path, err)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable, intent(out) :: scene_path
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: file
+    character(len=:), allocatable :: where
+    scene_path = ''
+    where = 'checkpoint "' // path // '"'
+    call open_checkpoint(path, file, err)
+    if (err%failed()) return
+    call h5_read_text(file, '/scene_path', scene_path, where, err)
+    call close_checkpoint(file, where, err)
+  end subroutine checkpoint_scene_path
+
+  !> Read a checkpoint into a state and pairs made for the same scene
+  !> (init_state, init_contact_pairs): refused with EXIT_INPUT when the
+  !> scene differs (first differing line named), when the file is not a
+  !> complete raccord checkpoint of this layout, or when its arrays do not
+  !> fit the model. ncol: number of history columns of this scene.
+  subroutine read_checkpoint(path, scene, state, pairs, ncol, mark, err)
+    character(len=*), intent(in) :: path
+    type(scene_t), intent(in) :: scene
+    type(state_t), intent(inout) :: state
+    type(contact_pair_t), intent(inout) :: pairs(:)
+    integer, intent(in) :: ncol
+    type(output_mark_t), intent(out) :: mark
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: file
+    character(len=:), allocatable :: where, text, identity, g
+    integer(i8) :: counters(4), two(2), three(3), one(1)
+    real(wp) :: td(2), en(10), r1(1)
+    integer :: k
+
+    where = 'checkpoint "' // path // '"'
+    identity = scene_identity(scene, err)
+    if (err%failed()) return
+    call open_checkpoint(path, file, err)
+    if (err%failed()) return
+    steps: block
+      call h5_read_attr_text(file, 'raccord_version', text, where, err)
+      if (err%failed()) exit steps
+      if (text /= raccord_version_string) call log_warn('checkpoint', where // ' was written by raccord ' // &
+        text // ', this is ' // raccord_version_string // ': the results may differ in round-off from an ' // &
+        'uninterrupted run')
+      call h5_read_text(file, '/scene', text, where, err)
+      if (err%failed()) exit steps
+      if (text /= identity) then
+        call raise_error(err, EXIT_INPUT, 'restart refused: scene ' // scene%path // ' is not the one ' // &
+          path // ' was written for; ' // first_difference(text, identity) // '. Restart with the same ' // &
+          'scene, or run the changed scene afresh without --restart')
+        exit steps
+      end if
+      call h5_read_i8(file, '/state/counters', two, where, err)
+      call h5_read_real(file, '/state/time_dt', td, where, err)
+      if (err%failed()) exit steps
+      if (two(2) /= state%nsteps .or. td(2) /= state%dt) then
+        call raise_error(err, EXIT_INPUT, 'restart refused: ' // where // ' has ' // str(two(2)) // &
+          ' steps of dt = ' // str(td(2)) // ', this run plans ' // str(state%nsteps) // ' of dt = ' // &
+          str(state%dt) // ' (another raccord build, or a changed mesh file?)')
+        exit steps
+      end if
+      if (two(1) < 1 .or. two(1) > two(2)) then
+        call raise_error(err, EXIT_INPUT, where // ' is damaged: step ' // str(two(1)) // ' of ' // str(two(2)))
+        exit steps
+      end if
+      state%step = two(1)
+      state%time = td(1)
+      call h5_read_real(file, '/state/u', state%u, where, err)
+      call h5_read_real(file, '/state/u_prev', state%u_prev, where, err)
+      call h5_read_real(file, '/state/v', state%v, where, err)
+      call h5_read_real(file, '/state/energy', en, where, err)
+      if (err%failed()) exit steps
+      associate (e => state%energy)
+        e%kinetic = en(1); e%internal = en(2); e%discrete = en(3); e%external = en(4); e%damping = en(5)
+        e%contact = en(6); e%friction = en(7); e%initial = en(8); e%balance = en(9); e%scale = en(10)
+      end associate
+      if (h5_link_exists(file, '/contact/pair_' // str(size(pairs) + 1))) then
+        call raise_error(err, EXIT_INPUT, where // ' has more contact pairs than the scene (' // str(size(pairs)) // ')')
+        exit steps
+      end if
+      allocate(mark%profile_bytes(size(pairs)))
+      do k = 1, size(pairs)
+        g = '/contact/pair_' // str(k) // '/'
+        call h5_read_int(file, g // 'status', pairs(k)%status, where, err)
+        call h5_read_real(file, g // 'sigma', pairs(k)%sigma, where, err)
+        call h5_read_i8(file, g // 'counters', counters, where, err)
+        call h5_read_real(file, g // 'residual_max', r1, where, err)
+        call h5_read_i8(file, g // 'profile_bytes', one, where, err)
+        if (err%failed()) exit steps
+        pairs(k)%failed_streak = int(counters(1))
+        pairs(k)%failed_total = counters(2)
+        pairs(k)%iterations_total = counters(3)
+        pairs(k)%steps = counters(4)
+        pairs(k)%residual_max = r1(1)
+        mark%profile_bytes(k) = one(1)
+      end do
+      call h5_read_i8(file, '/output/counters', three, where, err)
+      if (err%failed()) exit steps
+      mark%frames_written = int(three(1))
+      mark%nrow = int(three(2))
+      mark%history_bytes = three(3)
+      if (mark%nrow < 0 .or. mark%frames_written < 0 .or. mark%history_bytes < 0) then
+        call raise_error(err, EXIT_INPUT, where // ' is damaged: negative output counters')
+        exit steps
+      end if
+      allocate(mark%table(ncol, mark%nrow))
+      call h5_read_real(file, '/output/history_table', mark%table, where, err)
+    end block steps
+    call close_checkpoint(file, where, err)
+  end subroutine read_checkpoint
+
+  ! --- private -----------------------------------------------------------
+
+  !> Open a checkpoint read-only and check its format and version.
+  subroutine open_checkpoint(path, file, err)
+    character(len=*), intent(in) :: path
+    integer(hid_t), intent(out) :: file
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: where, fmt, version
+    integer :: hdferr
+    file = -1
+    if (err%failed()) return
+    where = 'checkpoint "' // path // '"'
+    if (.not. file_exists(path)) then
+      call raise_error(err, EXIT_INPUT, 'no ' // where // '; give the <stem>.checkpoint.h5 a stopped run wrote ' // &
+        '(a .part file is an unfinished checkpoint and cannot be used)')
+      return
+    end if
+    call h5_acquire(err)
+    if (err%failed()) return
+    call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+    if (hdferr /= 0) then
+      file = -1
+      call raise_error(err, EXIT_INPUT, 'cannot read ' // where // ': not an HDF5 file, or truncated or damaged; ' // &
+        'run the scene afresh without --restart')
+      call h5_release(err)
+      return
+    end if
+    call h5_read_attr_text(file, 'format', fmt, where, err)
+    if (.not. err%failed()) then
+      if (fmt /= FORMAT_NAME) call raise_error(err, EXIT_INPUT, where // ' is not a raccord checkpoint (format "' // &
+        fmt // '")')
+    end if
+    call h5_read_attr_text(file, 'raccord_version', version, where, err)
+    if (.not. err%failed()) then
+      if (.not. h5_link_exists(file, '/state/u')) call raise_error(err, EXIT_INPUT, where // ' is incomplete')
+    end if
+
+    if (err%failed()) call close_checkpoint(file, where, err)
+  end subroutine open_checkpoint
+
+  subroutine close_checkpoint(file, where, err)
+    integer(hid_t), intent(inout) :: file
+    character(len=*), intent(in) :: where
+    type(error_t), intent(inout) :: err
+    integer :: hdferr
+    type(error_t) :: cerr
+    if (file == -1) return
+    call h5fclose_f(file, hdferr)
+    if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close ' // where)
+    file = -1
+    call h5_release(cerr)
+  end subroutine close_checkpoint
+
+  !> "first difference: checkpoint 'a', scene 'b'" between two echoes.
+  function first_difference(a, b) result(s)
+    character(len=*), intent(in) :: a, b
+    character(len=:), allocatable :: s
+    integer :: ia, ib, ea, eb
+    character(len=1), parameter :: nl = new_line('a')
+    ia = 1
+    ib = 1
+    do
+      ea = next_end(a, ia)
+      eb = next_end(b, ib)
+      if (ia > len(a) .and. ib > len(b)) then
+        s = 'they differ'
+        return
+      end if
+      if (a(ia:ea) /= b(ib:eb)) exit
+      ia = ea + 2
+      ib = eb + 2
+    end do
+    s = 'first difference: the checkpoint has "' // trim(adjustl(a(ia:ea))) // '", the scene "' // &
+      trim(adjustl(b(ib:eb))) // '"'
+  contains
+    pure integer function next_end(t, i0) result(e)
+      character(len=*), intent(in) :: t
+      integer, intent(in) :: i0
+      integer :: k
+      if (i0 > len(t)) then
+        e = i0 - 1
+        return
+      end if
+      k = index(t(i0:), nl)
+      if (k == 0) then
+        e = len(t)
+      else
+        e = i0 + k - 2
+      end if
+    end function next_end
+  end function first_difference
+end module raccord_checkpoint
