@@ -46,6 +46,9 @@ module raccord_mortar
   ! A multiplier whose overlap integral is below this fraction of the
   ! shortest slave segment does not become a constraint.
   real(wp), parameter :: LEN_TOL = 1.0e-9_wp
+  ! A slave node counts as facing the master when its parameter lies in an
+  ! overlap to within this (matching ends meet at +-1 up to round-off).
+  real(wp), parameter :: XI_COVER = 1.0e-8_wp
 
   !> Per-pair scratch, sized once by init_mortar; the master-entry buffers
   !> grow only (no allocation per step once the contact zone is known).
@@ -59,6 +62,7 @@ module raccord_mortar
     real(wp), allocatable :: g1loc(:,:,:)     !< (3, 3, nseg) G1 contributions: (phi local i, psi local j)
     real(wp), allocatable :: len(:)           !< (nnode) integral of psi_j over the overlap
     real(wp), allocatable :: trib(:)          !< (nnode) integral of phi_j over the overlap (sum_k G1(j, k))
+    logical, allocatable :: covered(:)        !< (nnode) the node itself faces the master this step
     integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
     integer, allocatable :: mptr(:)           !< (nseg + 1) start of each slave segment's master entries
     integer :: nment = 0
@@ -115,6 +119,7 @@ contains
     allocate(w%nadj(nn), w%adj_seg(2, nn), w%adj_loc(2, nn), w%cidx(nn), source=0)
     allocate(w%nrm(2, nn), w%len(nn), w%trib(nn), source=0.0_wp)
     allocate(w%g1loc(3, 3, ns), source=0.0_wp)
+    allocate(w%covered(nn), source=.false.)
     allocate(w%mptr(ns + 1), source=1)
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%mark(master%nseg), source=.false.)
@@ -168,6 +173,7 @@ contains
     w%xi_seg = 0
     w%f_seg = 0
     w%nment = 0
+    w%covered = .false.
     w%mptr(1) = 1
     slave_segments: do k = 1, slave%nseg
       call load_segment(slave, x, k, xs)
@@ -215,6 +221,7 @@ contains
       end do
       w%mptr(k + 1) = w%nment + 1
     end do slave_segments
+    call merge_uncovered(slave, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
     ! And of each slave shape function: sum_k G1(j, k) (sum_k psi_k = 1), the
@@ -342,6 +349,10 @@ contains
     call segment_point(nenm, xm, eta, pm, tm)
     if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) return
     if (abs(dot_product(pm - ps, n)) > reach) return
+    ! Slave nodes whose own point faces this master segment.
+    do a = 1, nen
+      if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
+    end do
 
     ! Split at the discontinuities of psi (P0: dual-cell bounds z_i; P1 on
     ! 3-node edges: the mid node) so that each piece is smooth.
@@ -391,6 +402,52 @@ contains
       end do
     end do
   end subroutine integrate_overlap
+
+  !> Boundary modification of the multiplier space (Wohlmuth, SIAM J.
+  !> Numer. Anal. 38 (2000) 989-1012; Popp et al., IJNME 2010, section 3.3):
+  !> a slave node that does not itself face the master, but whose multiplier
+  !> support meets it (the slave runs past the master's end), gets no
+  !> multiplier of its own; on each slave segment its basis function is
+  !> added to that of the nearest node of the segment that does face the
+  !> master (psi_b' <- psi_b' + psi_b, so sum_j psi_j = 1 still holds and a
+  !> constant pressure is still represented). Without this the nodal gap
+  !> G1^-1 g_w of such a node is the gap to the master's last segment
+  !> extended past its end: the node is held on a line that is not there,
+  !> and as that segment turns (a block tipping over the master's corner)
+  !> the constraint does work on the bodies, giving energy back
+  !> (doc/verification.md section 13).
+  subroutine merge_uncovered(slave, w)
+    type(contact_surface_t), intent(in) :: slave
+    type(mortar_work_t), intent(inout) :: w
+    integer :: k, b, bb, target, nen, e
+    real(wp) :: dist, best
+    nen = slave%nen_seg
+    do k = 1, slave%nseg
+      do b = 1, nen
+        if (w%covered(w%pos(b, k))) cycle
+        if (all(w%g1loc(1:nen, b, k) == 0.0_wp)) cycle
+        ! Nearest node of this segment that faces the master.
+        target = 0
+        best = huge(1.0_wp)
+        do bb = 1, nen
+          if (bb == b .or. .not. w%covered(w%pos(bb, k))) cycle
+          dist = abs(NODE_XI(bb) - NODE_XI(b))
+          if (dist < best) then
+            best = dist
+            target = bb
+          end if
+        end do
+        ! No node of the segment faces the master (a master shorter than
+        ! one slave segment): keep the standard basis there.
+        if (target == 0) cycle
+        w%g1loc(1:nen, target, k) = w%g1loc(1:nen, target, k) + w%g1loc(1:nen, b, k)
+        w%g1loc(1:nen, b, k) = 0.0_wp
+        do e = w%mptr(k), w%mptr(k + 1) - 1
+          if (w%ment_loc(e) == b) w%ment_loc(e) = target
+        end do
+      end do
+    end do
+  end subroutine merge_uncovered
 
   !> Slave nodal normals: the normalised mean of the outward unit normals of
   !> the segments meeting at the node, each taken at the node (for 3-node
