@@ -55,6 +55,12 @@ module raccord_contact_pair
     integer(i8) :: failed_total = 0, iterations_total = 0, steps = 0
     real(wp) :: residual = 0.0_wp, residual_max = 0.0_wp
     integer(i8) :: clock_build = 0, clock_solve = 0
+    ! Initial overlap found at t = 0 (see measure_overlap).
+    integer :: overlap_nodes = 0                   !< constraints whose gap at t = 0 is negative
+    real(wp) :: overlap_max = 0.0_wp               !< largest overlap at t = 0 (length)
+    integer :: overlap_node_id = 0                 !< mesh (file) id of the slave node with that overlap
+    integer, allocatable :: slave_id(:)            !< mesh (file) id of each slave surface node, for messages
+    real(wp) :: overlap_energy = 0.0_wp            !< energy the first step's push-out gave the bodies
   end type contact_pair_t
 
   public :: init_contact_pairs, enforce_contact
@@ -110,6 +116,7 @@ contains
           allocate(pair%sigma(ns), pair%gap(ns), pair%lam_n(ns), pair%lam_t(ns), pair%pressure(ns), &
             pair%shear(ns), pair%slip(ns), pair%trib(ns), source=0.0_wp)
           pair%sigma = 1.0_wp
+          pair%slave_id = mesh%node_id(pair%slave%node)
           allocate(pair%st_c(ns), pair%sg_c(ns))
         end associate
         allocate(pair%xcur(2, model%nnode), pair%xpred(2, model%nnode), pair%dcur(2, model%nnode), &
@@ -148,6 +155,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: i, p, j, m
     integer(i8) :: c0, c1, c2
+    real(wp) :: wc0
 
     call system_clock(c0)
     ! Positions at t(n), predicted positions and increments, at the surface nodes only.
@@ -196,7 +204,18 @@ contains
     else
       pair%failed_streak = 0
     end if
+    if (state%step == 0) call measure_overlap(pair)
+    wc0 = state%energy%contact
     call apply_correction(pair, model, state)
+    if (state%step == 0 .and. pair%overlap_nodes > 0) then
+      pair%overlap_energy = -(state%energy%contact - wc0)
+      call log_warn('contact', 'pair ' // pair%name // ': the surfaces overlap at t = 0: ' // &
+        str(pair%overlap_nodes) // ' of ' // str(pair%slave%nnode) // ' slave nodes are inside the master, ' // &
+        'by up to ' // str(pair%overlap_max, 3) // ' (node ' // str(pair%overlap_node_id) // '). The first ' // &
+        'step pushed them out (forward increment: the gap is closed at t(1)), which gave the bodies ' // &
+        str(pair%overlap_energy, 3) // ' of energy (negative contact work in the energy account). ' // &
+        'To start without it, move the slave surface out of the master in the mesh.')
+    end if
 
     ! Per slave node results (open unless constrained this step).
     pair%status = ST_OPEN
@@ -243,6 +262,36 @@ contains
       end do
     end subroutine load_surface
   end subroutine enforce_pair
+
+  !> Overlap of the surfaces at t = 0, before any contact force: the gap of
+  !> each constraint on the positions at t(0), g_w(x) = g_w(xpred) - sum_p
+  !> w_jp du_p . n_j, as a length (over sum_i G1(i, j), the integral of
+  !> psi_j: a uniform overlap d reads d for every method and multiplier).
+  !> Overlaps below 1e-9 of the shortest slave segment are round-off of
+  !> surfaces that touch, not overlaps.
+  subroutine measure_overlap(pair)
+    type(contact_pair_t), intent(inout) :: pair
+    integer :: j, e
+    real(wp) :: g0, ov, tol
+    tol = 1.0e-9_wp*pair%slave%h_min
+    pair%overlap_nodes = 0
+    pair%overlap_max = 0.0_wp
+    pair%overlap_node_id = 0
+    do j = 1, pair%cs%m
+      g0 = pair%cs%gap_w(j)
+      do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+        g0 = g0 - pair%cs%ent_w(e)*dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%normal(:, j))
+      end do
+      ov = -g0/sum(pair%cs%g1(:, j))
+      if (ov > tol) then
+        pair%overlap_nodes = pair%overlap_nodes + 1
+        if (ov > pair%overlap_max) then
+          pair%overlap_max = ov
+          pair%overlap_node_id = pair%slave_id(pair%cs%snode(j))
+        end if
+      end if
+    end do
+  end subroutine measure_overlap
 
   !> Velocity step h of (CD-1): dt, or dt/2 on the first half step. A force
   !> f_c at t(n) then moves v(n+1/2) by h M^-1 f_c / (1 + alpha h/2) (the
