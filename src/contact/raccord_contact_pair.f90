@@ -42,6 +42,10 @@ module raccord_contact_pair
     ! Per slave surface node, kept between steps (status is the warm start).
     integer, allocatable :: status(:)
     real(wp), allocatable :: sigma(:), gap(:), lam_n(:), lam_t(:), pressure(:), shear(:), slip(:), trib(:)
+    ! The same for mortar's corner rows (constraint index nnode + 1, + 2:
+    ! the master's first and last corner against the slave face).
+    integer :: corner_status(2) = ST_OPEN
+    real(wp) :: corner_sigma(2) = 1.0_wp, corner_force(2) = 0.0_wp
     ! Per constraint scratch, and per global node scratch (touched at surface nodes only).
     integer, allocatable :: st_c(:)
     real(wp), allocatable :: sg_c(:)
@@ -117,7 +121,7 @@ contains
             pair%shear(ns), pair%slip(ns), pair%trib(ns), source=0.0_wp)
           pair%sigma = 1.0_wp
           pair%slave_id = mesh%node_id(pair%slave%node)
-          allocate(pair%st_c(ns), pair%sg_c(ns))
+          allocate(pair%st_c(ns + 2), pair%sg_c(ns + 2))
         end associate
         allocate(pair%xcur(2, model%nnode), pair%xpred(2, model%nnode), pair%dcur(2, model%nnode), &
           pair%fc(2, model%nnode), &
@@ -173,8 +177,13 @@ contains
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.
     do j = 1, m
       i = pair%cs%snode(j)
-      pair%st_c(j) = pair%status(i)
-      pair%sg_c(j) = pair%sigma(i)
+      if (i > pair%slave%nnode) then
+        pair%st_c(j) = pair%corner_status(i - pair%slave%nnode)
+        pair%sg_c(j) = pair%corner_sigma(i - pair%slave%nnode)
+      else
+        pair%st_c(j) = pair%status(i)
+        pair%sg_c(j) = pair%sigma(i)
+      end if
       if (pair%st_c(j) == ST_OPEN .and. pair%cs%gap_w(j) < 0.0_wp) pair%st_c(j) = ST_STICK
     end do
     call system_clock(c1)
@@ -229,8 +238,19 @@ contains
     pair%tangent_sum = 0.0_wp
     pair%nactive = 0
     pair%nslip = 0
+    pair%corner_status = ST_OPEN
+    pair%corner_force = 0.0_wp
     do j = 1, m
       i = pair%cs%snode(j)
+      if (i > pair%slave%nnode) then
+        ! A mortar corner row: a point force, no per-node output.
+        pair%corner_status(i - pair%slave%nnode) = pair%st_c(j)
+        pair%corner_sigma(i - pair%slave%nnode) = pair%sg_c(j)
+        pair%corner_force(i - pair%slave%nnode) = pair%work%fn(j)
+        pair%normal_sum = pair%normal_sum + pair%work%fn(j)
+        pair%tangent_sum = pair%tangent_sum + pair%work%ft(j)
+        cycle
+      end if
       pair%status(i) = pair%st_c(j)
       pair%sigma(i) = pair%sg_c(j)
       pair%gap(i) = pair%work%gn(j)
@@ -283,6 +303,7 @@ contains
         g0 = g0 - pair%cs%ent_w(e)*dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%normal(:, j))
       end do
       ov = -g0/sum(pair%cs%g1(:, j))
+      if (pair%cs%snode(j) > pair%slave%nnode) cycle      ! a master corner, not a slave node
       if (ov > tol) then
         pair%overlap_nodes = pair%overlap_nodes + 1
         if (ov > pair%overlap_max) then
