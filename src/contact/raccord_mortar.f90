@@ -229,8 +229,8 @@ contains
       end do
       w%mptr(k + 1) = w%nment + 1
     end do slave_segments
-    call merge_uncovered(slave, w)
     call find_corner_rows(slave, master, x, reach, w)
+    call merge_uncovered(slave, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
     ! And of each slave shape function: sum_k G1(j, k) (sum_k psi_k = 1), the
@@ -461,10 +461,16 @@ contains
   subroutine merge_uncovered(slave, w)
     type(contact_surface_t), intent(in) :: slave
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, b, bb, target, nen, e
+    integer :: k, b, bb, target, nen, e, t
     real(wp) :: dist, best
     nen = slave%nen_seg
-    do k = 1, slave%nseg
+    ! Only where the master ends: the slave segments an end corner of the
+    ! master lies over (find_corner_rows). Elsewhere a node whose overlap
+    ! stops short of it stops there because the master beyond is out of
+    ! reach or faces away, and the standard basis is kept (the paper's
+    ! scenes, whose master arcs end far from the contact, are unchanged).
+    do t = 1, w%ncrow
+      k = w%crow_seg(t)
       do b = 1, nen
         if (w%covered(w%pos(b, k))) cycle
         if (all(w%g1loc(1:nen, b, k) == 0.0_wp)) cycle
