@@ -37,7 +37,7 @@ contains
   !> projection may still land on the last segment; mortar: beyond the end
   !> itself, such nodes get no multiplier, raccord_mortar's boundary
   !> modification); nothing is non-finite; the energy balance holds; the
-  !> contact work ends positive and never falls below -2e-2 of the energy
+  !> contact work ends positive and never falls below -1e-2 of the energy
   !> scale (mortar's corner row holds the master's corner out of the slave
   !> face; without it mortar gave back 0.16 of the scale, see
   !> doc/verification.md section 13).
@@ -122,9 +122,10 @@ contains
     call check(failure, abs(state%energy%balance) < 1.0e-10_wp*state%energy%scale, 'energy balance not exact')
     ! Contact may give back only what the moving geometry of a rocking
     ! block on the master's corner gives (measured: node-to-segment -8.1e-5,
-    ! mortar -1.0e-2 of the scale at worst, both ending positive); before
-    ! mortar's corner rows it gave back 0.16 and kept falling.
-    call check(failure, wc_min >= -2.0e-2_wp*state%energy%scale, 'contact gave back more than 2e-2 of the energy scale')
+    ! mortar -3.5e-3 of the final energy scale at worst, both ending
+    ! positive); before mortar's corner rows it gave back 0.16 and kept
+    ! falling.
+    call check(failure, wc_min >= -1.0e-2_wp*state%energy%scale, 'contact gave back more than 1e-2 of the energy scale')
     call check(failure, state%energy%contact >= 0.0_wp, 'contact gave energy over the whole slide')
   end subroutine slide_off_case
 
