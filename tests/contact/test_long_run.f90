@@ -9,7 +9,7 @@ program test_long_run
   use raccord_kinds, only: wp, pi
   use raccord_check, only: failure_t, new_test, run_tests, check
   use raccord_error, only: error_t
-  use raccord_scene, only: scene_t, BC_FIXED, BC_PRESSURE, BC_TRACTION, METHOD_NTS, METHOD_MORTAR
+  use raccord_scene, only: scene_t, BC_FIXED, BC_PRESSURE, BC_TRACTION, METHOD_MORTAR
   use raccord_deck, only: read_scene
   use raccord_mesh, only: mesh_t, ELEM_Q4, find_node_set
   use raccord_mesh_io, only: read_mesh
