@@ -16,7 +16,7 @@ module raccord_constraint_set
   implicit none
   private
 
-  integer, parameter, public :: G1_MAX_BAND = 2   !< half bandwidth of G1 kept (P0/P1 on Q4 or Q8 edges)
+  integer, parameter, public :: G1_MAX_BAND = 3   !< half bandwidth of G1 kept (P0/P1 on Q4 or Q8 edges, with a mortar corner row between)
 
   type, public :: constraint_set_t
     integer :: m = 0                          !< constraints this step

@@ -42,6 +42,10 @@ module raccord_contact_pair
     ! Per slave surface node, kept between steps (status is the warm start).
     integer, allocatable :: status(:)
     real(wp), allocatable :: sigma(:), gap(:), lam_n(:), lam_t(:), pressure(:), shear(:), slip(:), trib(:)
+    ! The same for mortar's corner rows (constraint index nnode + 1, + 2:
+    ! the master's first and last corner against the slave face).
+    integer :: corner_status(2) = ST_OPEN
+    real(wp) :: corner_sigma(2) = 1.0_wp, corner_force(2) = 0.0_wp
     ! Per constraint scratch, and per global node scratch (touched at surface nodes only).
     integer, allocatable :: st_c(:)
     real(wp), allocatable :: sg_c(:)
@@ -55,6 +59,12 @@ module raccord_contact_pair
     integer(i8) :: failed_total = 0, iterations_total = 0, steps = 0
     real(wp) :: residual = 0.0_wp, residual_max = 0.0_wp
     integer(i8) :: clock_build = 0, clock_solve = 0
+    ! Initial overlap found at t = 0 (see measure_overlap).
+    integer :: overlap_nodes = 0                   !< constraints whose gap at t = 0 is negative
+    real(wp) :: overlap_max = 0.0_wp               !< largest overlap at t = 0 (length)
+    integer :: overlap_node_id = 0                 !< mesh (file) id of the slave node with that overlap
+    integer, allocatable :: slave_id(:)            !< mesh (file) id of each slave surface node, for messages
+    real(wp) :: overlap_energy = 0.0_wp            !< energy the first step's push-out gave the bodies
   end type contact_pair_t
 
   public :: init_contact_pairs, enforce_contact
@@ -110,7 +120,8 @@ contains
           allocate(pair%sigma(ns), pair%gap(ns), pair%lam_n(ns), pair%lam_t(ns), pair%pressure(ns), &
             pair%shear(ns), pair%slip(ns), pair%trib(ns), source=0.0_wp)
           pair%sigma = 1.0_wp
-          allocate(pair%st_c(ns), pair%sg_c(ns))
+          pair%slave_id = mesh%node_id(pair%slave%node)
+          allocate(pair%st_c(ns + 2), pair%sg_c(ns + 2))
         end associate
         allocate(pair%xcur(2, model%nnode), pair%xpred(2, model%nnode), pair%dcur(2, model%nnode), &
           pair%fc(2, model%nnode), &
@@ -148,6 +159,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: i, p, j, m
     integer(i8) :: c0, c1, c2
+    real(wp) :: wc0
 
     call system_clock(c0)
     ! Positions at t(n), predicted positions and increments, at the surface nodes only.
@@ -165,8 +177,13 @@ contains
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.
     do j = 1, m
       i = pair%cs%snode(j)
-      pair%st_c(j) = pair%status(i)
-      pair%sg_c(j) = pair%sigma(i)
+      if (i > pair%slave%nnode) then
+        pair%st_c(j) = pair%corner_status(i - pair%slave%nnode)
+        pair%sg_c(j) = pair%corner_sigma(i - pair%slave%nnode)
+      else
+        pair%st_c(j) = pair%status(i)
+        pair%sg_c(j) = pair%sigma(i)
+      end if
       if (pair%st_c(j) == ST_OPEN .and. pair%cs%gap_w(j) < 0.0_wp) pair%st_c(j) = ST_STICK
     end do
     call system_clock(c1)
@@ -196,7 +213,18 @@ contains
     else
       pair%failed_streak = 0
     end if
+    if (state%step == 0) call measure_overlap(pair)
+    wc0 = state%energy%contact
     call apply_correction(pair, model, state)
+    if (state%step == 0 .and. pair%overlap_nodes > 0) then
+      pair%overlap_energy = -(state%energy%contact - wc0)
+      call log_warn('contact', 'pair ' // pair%name // ': the surfaces overlap at t = 0: ' // &
+        str(pair%overlap_nodes) // ' of ' // str(pair%slave%nnode) // ' slave nodes are inside the master, ' // &
+        'by up to ' // str(pair%overlap_max, 3) // ' (node ' // str(pair%overlap_node_id) // '). The first ' // &
+        'step pushed them out (forward increment: the gap is closed at t(1)), which gave the bodies ' // &
+        str(pair%overlap_energy, 3) // ' of energy (negative contact work in the energy account). ' // &
+        'To start without it, move the slave surface out of the master in the mesh.')
+    end if
 
     ! Per slave node results (open unless constrained this step).
     pair%status = ST_OPEN
@@ -210,8 +238,19 @@ contains
     pair%tangent_sum = 0.0_wp
     pair%nactive = 0
     pair%nslip = 0
+    pair%corner_status = ST_OPEN
+    pair%corner_force = 0.0_wp
     do j = 1, m
       i = pair%cs%snode(j)
+      if (i > pair%slave%nnode) then
+        ! A mortar corner row: a point force, no per-node output.
+        pair%corner_status(i - pair%slave%nnode) = pair%st_c(j)
+        pair%corner_sigma(i - pair%slave%nnode) = pair%sg_c(j)
+        pair%corner_force(i - pair%slave%nnode) = pair%work%fn(j)
+        pair%normal_sum = pair%normal_sum + pair%work%fn(j)
+        pair%tangent_sum = pair%tangent_sum + pair%work%ft(j)
+        cycle
+      end if
       pair%status(i) = pair%st_c(j)
       pair%sigma(i) = pair%sg_c(j)
       pair%gap(i) = pair%work%gn(j)
@@ -243,6 +282,37 @@ contains
       end do
     end subroutine load_surface
   end subroutine enforce_pair
+
+  !> Overlap of the surfaces at t = 0, before any contact force: the gap of
+  !> each constraint on the positions at t(0), g_w(x) = g_w(xpred) - sum_p
+  !> w_jp du_p . n_j, as a length (over sum_i G1(i, j), the integral of
+  !> psi_j: a uniform overlap d reads d for every method and multiplier).
+  !> Overlaps below 1e-9 of the shortest slave segment are round-off of
+  !> surfaces that touch, not overlaps.
+  subroutine measure_overlap(pair)
+    type(contact_pair_t), intent(inout) :: pair
+    integer :: j, e
+    real(wp) :: g0, ov, tol
+    tol = 1.0e-9_wp*pair%slave%h_min
+    pair%overlap_nodes = 0
+    pair%overlap_max = 0.0_wp
+    pair%overlap_node_id = 0
+    do j = 1, pair%cs%m
+      g0 = pair%cs%gap_w(j)
+      do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+        g0 = g0 - pair%cs%ent_w(e)*dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%normal(:, j))
+      end do
+      ov = -g0/sum(pair%cs%g1(:, j))
+      if (pair%cs%snode(j) > pair%slave%nnode) cycle      ! a master corner, not a slave node
+      if (ov > tol) then
+        pair%overlap_nodes = pair%overlap_nodes + 1
+        if (ov > pair%overlap_max) then
+          pair%overlap_max = ov
+          pair%overlap_node_id = pair%slave_id(pair%cs%snode(j))
+        end if
+      end if
+    end do
+  end subroutine measure_overlap
 
   !> Velocity step h of (CD-1): dt, or dt/2 on the first half step. A force
   !> f_c at t(n) then moves v(n+1/2) by h M^-1 f_c / (1 + alpha h/2) (the

@@ -46,6 +46,9 @@ module raccord_mortar
   ! A multiplier whose overlap integral is below this fraction of the
   ! shortest slave segment does not become a constraint.
   real(wp), parameter :: LEN_TOL = 1.0e-9_wp
+  ! A slave node counts as facing the master when its parameter lies in an
+  ! overlap to within this (matching ends meet at +-1 up to round-off).
+  real(wp), parameter :: XI_COVER = 1.0e-8_wp
 
   !> Per-pair scratch, sized once by init_mortar; the master-entry buffers
   !> grow only (no allocation per step once the contact zone is known).
@@ -59,6 +62,15 @@ module raccord_mortar
     real(wp), allocatable :: g1loc(:,:,:)     !< (3, 3, nseg) G1 contributions: (phi local i, psi local j)
     real(wp), allocatable :: len(:)           !< (nnode) integral of psi_j over the overlap
     real(wp), allocatable :: trib(:)          !< (nnode) integral of phi_j over the overlap (sum_k G1(j, k))
+    logical, allocatable :: covered(:)        !< (nnode) the node itself faces the master this step
+    ! Corner rows: an end corner of an open master inside a slave segment
+    ! (at most one per end), kept out of the slave face by a point row.
+    integer :: ncrow = 0
+    integer :: crow_end(2) = 0                !< which master end (1: first corner, 2: last)
+    integer :: crow_seg(2) = 0                !< slave segment it faces
+    integer :: crow_node(2) = 0               !< master corner node (global)
+    real(wp) :: crow_xi(2) = 0.0_wp           !< slave parameter of its projection
+    real(wp) :: crow_n(2, 2) = 0.0_wp         !< slave normal there (unit)
     integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
     integer, allocatable :: mptr(:)           !< (nseg + 1) start of each slave segment's master entries
     integer :: nment = 0
@@ -115,6 +127,7 @@ contains
     allocate(w%nadj(nn), w%adj_seg(2, nn), w%adj_loc(2, nn), w%cidx(nn), source=0)
     allocate(w%nrm(2, nn), w%len(nn), w%trib(nn), source=0.0_wp)
     allocate(w%g1loc(3, 3, ns), source=0.0_wp)
+    allocate(w%covered(nn), source=.false.)
     allocate(w%mptr(ns + 1), source=1)
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%mark(master%nseg), source=.false.)
@@ -168,6 +181,7 @@ contains
     w%xi_seg = 0
     w%f_seg = 0
     w%nment = 0
+    w%covered = .false.
     w%mptr(1) = 1
     slave_segments: do k = 1, slave%nseg
       call load_segment(slave, x, k, xs)
@@ -215,6 +229,8 @@ contains
       end do
       w%mptr(k + 1) = w%nment + 1
     end do slave_segments
+    call find_corner_rows(slave, master, x, reach, w)
+    call merge_uncovered(slave, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
     ! And of each slave shape function: sum_k G1(j, k) (sum_k psi_k = 1), the
@@ -277,10 +293,16 @@ contains
       else
         w%cidx(c) = 0
       end if
+      ! A corner row takes the place after the start node of its segment
+      ! (chain order keeps the banded solve narrow).
+      do t = 1, w%ncrow
+        if (w%pos(1, w%crow_seg(t)) == c) m = m + 1
+      end do
     end do
-    call cs_start(cs, slave%nnode)
+    call cs_start(cs, slave%nnode + 2)
     band = 0
     do c = 1, slave%nnode
+      call corner_rows_after(c)
       j = w%cidx(c)
       if (j == 0) cycle
       call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
@@ -308,7 +330,34 @@ contains
       end do
       call cs_finish_row(cs, xpred, du)
     end do
+    call corner_rows_after(slave%nnode + 1)
     cs%g1_band = band
+  contains
+    !> Emit the corner rows that follow chain node c - 1 (called before the
+    !> row of c, so that they land right after c - 1's row, where the
+    !> numbering above reserved their place).
+    subroutine corner_rows_after(cnext)
+      integer, intent(in) :: cnext
+      integer :: tt, a, kk
+      real(wp) :: sh(3), dsh(3)
+      do tt = 1, w%ncrow
+        kk = w%crow_seg(tt)
+        if (w%pos(1, kk) /= cnext - 1) cycle
+        call shape_line(nen, w%crow_xi(tt), sh, dsh)
+        ! Constraint index slave%nnode + end, so the pair keeps its state
+        ! apart from the slave nodes'.
+        call cs_add_row(cs, slave%nnode + w%crow_end(tt), w%crow_node(tt), w%crow_n(:, tt), &
+          slave%s0(w%pos(2, kk)) - slave%s0(w%pos(1, kk)), &
+          0.5_wp*((1.0_wp - w%crow_xi(tt))*slave%s0(w%pos(1, kk)) + (1.0_wp + w%crow_xi(tt))*slave%s0(w%pos(2, kk))))
+        ! Gap of the master corner to the slave face along the slave normal:
+        ! +1 on the corner node, -N_a(xi_c) on the slave segment's nodes.
+        call cs_add_entry(cs, w%crow_node(tt), 1.0_wp)
+        do a = 1, nen
+          call cs_add_entry(cs, slave%seg(a, kk), -sh(a))
+        end do
+        call cs_finish_row(cs, xpred, du)
+      end do
+    end subroutine corner_rows_after
   end subroutine assemble_rows
 
   !> Mortar segments of slave segment k against master segment l, and their
@@ -342,6 +391,10 @@ contains
     call segment_point(nenm, xm, eta, pm, tm)
     if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) return
     if (abs(dot_product(pm - ps, n)) > reach) return
+    ! Slave nodes whose own point faces this master segment.
+    do a = 1, nen
+      if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
+    end do
 
     ! Split at the discontinuities of psi (P0: dual-cell bounds z_i; P1 on
     ! 3-node edges: the mid node) so that each piece is smooth.
@@ -391,6 +444,121 @@ contains
       end do
     end do
   end subroutine integrate_overlap
+
+  !> Boundary modification of the multiplier space (Wohlmuth, SIAM J.
+  !> Numer. Anal. 38 (2000) 989-1012; Popp et al., IJNME 2010, section 3.3):
+  !> a slave node that does not itself face the master, but whose multiplier
+  !> support meets it (the slave runs past the master's end), gets no
+  !> multiplier of its own; on each slave segment its basis function is
+  !> added to that of the nearest node of the segment that does face the
+  !> master (psi_b' <- psi_b' + psi_b, so sum_j psi_j = 1 still holds and a
+  !> constant pressure is still represented). Without this the nodal gap
+  !> G1^-1 g_w of such a node is the gap to the master's last segment
+  !> extended past its end: the node is held on a line that is not there,
+  !> and as that segment turns (a block tipping over the master's corner)
+  !> the constraint does work on the bodies, giving energy back
+  !> (doc/verification.md section 13).
+  subroutine merge_uncovered(slave, w)
+    type(contact_surface_t), intent(in) :: slave
+    type(mortar_work_t), intent(inout) :: w
+    integer :: k, b, bb, target, nen, e, t
+    real(wp) :: dist, best
+    nen = slave%nen_seg
+    ! Only where the master ends: the slave segments an end corner of the
+    ! master lies over (find_corner_rows). Elsewhere a node whose overlap
+    ! stops short of it stops there because the master beyond is out of
+    ! reach or faces away, and the standard basis is kept (the paper's
+    ! scenes, whose master arcs end far from the contact, are unchanged).
+    do t = 1, w%ncrow
+      k = w%crow_seg(t)
+      do b = 1, nen
+        if (w%covered(w%pos(b, k))) cycle
+        if (all(w%g1loc(1:nen, b, k) == 0.0_wp)) cycle
+        ! Nearest node of this segment that faces the master.
+        target = 0
+        best = huge(1.0_wp)
+        do bb = 1, nen
+          if (bb == b .or. .not. w%covered(w%pos(bb, k))) cycle
+          dist = abs(NODE_XI(bb) - NODE_XI(b))
+          if (dist < best) then
+            best = dist
+            target = bb
+          end if
+        end do
+        ! No node of the segment faces the master (a master shorter than
+        ! one slave segment): keep the standard basis there.
+        if (target == 0) cycle
+        w%g1loc(1:nen, target, k) = w%g1loc(1:nen, target, k) + w%g1loc(1:nen, b, k)
+        w%g1loc(1:nen, b, k) = 0.0_wp
+        do e = w%mptr(k), w%mptr(k + 1) - 1
+          if (w%ment_loc(e) == b) w%ment_loc(e) = target
+        end do
+      end do
+    end do
+  end subroutine merge_uncovered
+
+  !> Corner rows. Both methods constrain slave points only; a convex master
+  !> corner that lies inside a slave face (a slave tipping over the end of
+  !> its master) is held by nothing, and mortar's overlap then ends at the
+  !> corner's projection xi_c with a negative gap there: as the overlap
+  !> shrinks, the moving constraint does work lambda psi(xi_c) g(xi_c)
+  !> dxi_c/dt on the bodies (energy given back; doc/verification.md section
+  !> 13). A point row for each end corner of an open master that projects
+  !> strictly inside a slave segment (along the slave normal field, within
+  !> reach, the master's end segment facing the slave) keeps g(xi_c) >= 0.
+  subroutine find_corner_rows(slave, master, x, reach, w)
+    type(contact_surface_t), intent(in) :: slave, master
+    real(wp), intent(in) :: x(:,:)
+    real(wp), intent(in) :: reach
+    type(mortar_work_t), intent(inout) :: w
+    integer :: t, k, a, l, cn, nen, kbest
+    real(wp) :: pc(2), xs(2, 3), nn(2, 3), xm(2, 3), flo, fhi, xi, ps(2), ts(2), n(2), dn(2), g, best, &
+      pm(2), tm(2), xibest, nbest(2)
+    w%ncrow = 0
+    if (master%closed) return
+    nen = slave%nen_seg
+    do t = 1, 2
+      cn = master%corner(merge(1, size(master%corner), t == 1))
+      l = merge(1, master%nseg, t == 1)
+      pc = x(:, cn)
+      call load_segment(master, x, l, xm)
+      call segment_point(master%nen_seg, xm, 0.0_wp, pm, tm)
+      best = reach
+      kbest = 0
+      xibest = 0.0_wp
+      nbest = 0.0_wp
+      do k = 1, slave%nseg
+        call load_segment(slave, x, k, xs)
+        nn = 0.0_wp
+        do a = 1, nen
+          nn(:, a) = w%nrm(:, w%pos(a, k))
+        end do
+        flo = end_offset(xs(:, 1), nn(:, 1), pc)
+        fhi = end_offset(xs(:, 2), nn(:, 2), pc)
+        if (sign(1.0_wp, flo) == sign(1.0_wp, fhi) .or. flo == 0.0_wp .or. fhi == 0.0_wp) cycle
+        xi = root_along_field(nen, xs, nn, pc, flo, fhi)
+        ! At a slave node the node's own row sees the corner.
+        if (abs(xi) >= 1.0_wp - XI_COVER) cycle
+        call segment_point(nen, xs, xi, ps, ts)
+        call normal_field(nen, nn, xi, n, dn)
+        n = n/max(norm2(n), tiny(1.0_wp))
+        g = dot_product(pc - ps, n)
+        if (abs(g) >= best) cycle
+        if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) cycle
+        best = abs(g)
+        kbest = k
+        xibest = xi
+        nbest = n
+      end do
+      if (kbest == 0) cycle
+      w%ncrow = w%ncrow + 1
+      w%crow_end(w%ncrow) = t
+      w%crow_seg(w%ncrow) = kbest
+      w%crow_node(w%ncrow) = cn
+      w%crow_xi(w%ncrow) = xibest
+      w%crow_n(:, w%ncrow) = nbest
+    end do
+  end subroutine find_corner_rows
 
   !> Slave nodal normals: the normalised mean of the outward unit normals of
   !> the segments meeting at the node, each taken at the node (for 3-node

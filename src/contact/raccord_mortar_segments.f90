@@ -85,6 +85,20 @@ contains
   pure real(wp) function root_along_field(nen, xs, nn, p, flo, fhi) result(xi)
     integer, intent(in) :: nen
     real(wp), intent(in) :: xs(2, 3), nn(2, 3), p(2), flo, fhi
+    ! No root inside: p is past the end where it lies ahead of both end
+    ! nodes' normal lines, F = (p - x) x n having the sign of t x n. The
+    ! smaller |F| (bracketed_root's rule, right for a straight ray) picked
+    ! the wrong end for a far master corner when the slave normals turn
+    ! (a master facet beyond a vertex was integrated over a whole slave
+    ! segment it does not face; doc/verification.md section 13).
+    if (flo /= 0.0_wp .and. fhi /= 0.0_wp .and. sign(1.0_wp, flo) == sign(1.0_wp, fhi)) then
+      if (sign(1.0_wp, flo) == sign(1.0_wp, cross2(xs(:, 2) - xs(:, 1), nn(:, 1) + nn(:, 2)))) then
+        xi = 1.0_wp
+      else
+        xi = -1.0_wp
+      end if
+      return
+    end if
     xi = bracketed_root(1, nen, xs, nn, p, [0.0_wp, 0.0_wp], flo, fhi)
   end function root_along_field
 

@@ -29,6 +29,10 @@ module raccord_multiplier_solver
   private
 
   integer, parameter, public :: ST_OPEN = 0, ST_STICK = 1, ST_SLIP = 2
+  !> Gaps below this fraction of a constraint's length are round-off of
+  !> touching surfaces (a length of 1 in coordinates of order 1e3 carries
+  !> errors of 1e-13).
+  real(wp), parameter :: GAP_ROUNDOFF = 1.0e-12_wp
 
   !> Workspace and results, indexed by constraint; buffers grow only.
   type, public :: solver_work_t
@@ -131,7 +135,7 @@ contains
       end do
       call band_matvec(cs, w%lam, w%fn)
       call band_matvec(cs, w%tau, w%ft)
-      call update_sets(m, mu, friction, w)
+      call update_sets(cs, m, mu, friction, w)
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit
     end do
@@ -141,8 +145,14 @@ contains
     sigma(1:m) = w%sigma(1:m)
   end subroutine solve_multipliers
 
-  !> Active-set update from the complementarity functions.
-  subroutine update_sets(m, mu, friction, w)
+  !> Active-set update from the complementarity functions. A constraint is
+  !> active when fn - c gn > c GAP_ROUNDOFF length: gaps within round-off of
+  !> zero (a surface sliding at zero gap along another, grazing) and
+  !> multipliers whose force is below what closes such a gap leave a node as
+  !> it is open, instead of letting round-off toggle it from step to step
+  !> (chatter; tests/contact/test_stability.f90, grazing).
+  subroutine update_sets(cs, m, mu, friction, w)
+    type(constraint_set_t), intent(in) :: cs
     integer, intent(in) :: m
     real(wp), intent(in) :: mu
     logical, intent(in) :: friction
@@ -154,7 +164,7 @@ contains
         w%status(j) = ST_OPEN
         cycle
       end if
-      if (w%fn(j) - w%c(j)*w%gn(j) > 0.0_wp) then
+      if (w%fn(j) - w%c(j)*w%gn(j) > w%c(j)*GAP_ROUNDOFF*cs%length(j)) then
         if (.not. friction) then
           w%status(j) = ST_STICK
         else

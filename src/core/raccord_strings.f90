@@ -1,5 +1,6 @@
 !> Small string helpers: number formatting, case folding, trimming.
 module raccord_strings
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
   use raccord_kinds, only: wp, i8
   implicit none
   private
@@ -43,6 +44,15 @@ contains
     if (present(digits)) d = max(1, min(17, digits))
     if (x == 0.0_wp) then
       s = '0'
+      return
+    end if
+    ! NaN and infinities print without an exponent, which the trimming
+    ! below relies on (a NaN multiplier residual crashed the contact warning).
+    if (ieee_is_nan(x)) then
+      s = 'NaN'
+      return
+    else if (.not. ieee_is_finite(x)) then
+      s = merge('+Inf', '-Inf', x > 0.0_wp)
       return
     end if
     if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then

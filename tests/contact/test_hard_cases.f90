@@ -30,15 +30,17 @@ contains
 
   !> A block (1 wide) pressed on a block of the same width whose surface it
   !> overhangs by a third, then pushed sideways, frictionless, so that it
-  !> slides further off (only the lower block is damped: mass damping on the
-  !> slider would be a drag). Every slave node more than one slave element
-  !> beyond the master's end is open with no stress (mortar may keep the node
-  !> just past the end, whose multiplier support still overlaps the master);
-  !> nothing is non-finite; the energy balance holds. Known and printed, not
-  !> yet asserted: with mortar the contact work turns negative as the overlap
-  !> shrinks at the master's end (-0.25 of the energy scale here, against
-  !> +9e-4 for node-to-segment): the shrinking integration domain gives
-  !> energy back. To be fixed with the hard cases of the stability issue.
+  !> slides further off and tips over the master's corner (only the lower
+  !> block is damped: mass damping on the slider would be a drag). Every
+  !> slave node beyond the master's end is open with no stress
+  !> (node-to-segment: beyond one slave element past the end, where its
+  !> projection may still land on the last segment; mortar: beyond the end
+  !> itself, such nodes get no multiplier, raccord_mortar's boundary
+  !> modification); nothing is non-finite; the energy balance holds; the
+  !> contact work ends positive and never falls below -1e-2 of the energy
+  !> scale (mortar's corner row holds the master's corner out of the slave
+  !> face; without it mortar gave back 0.16 of the scale, see
+  !> doc/verification.md section 13).
   subroutine slide_off_case(failure, method)
     type(failure_t), allocatable, intent(out) :: failure
     integer, intent(in) :: method
@@ -49,7 +51,7 @@ contains
     type(time_plan_t) :: plan
     type(state_t) :: state
     type(error_t) :: err
-    real(wp) :: omega1, t1, x_master_end, max_open_pressure
+    real(wp) :: omega1, t1, x_master_end, max_open_pressure, wc_min, dwc_min, wc_prev
     integer :: i, kb, nopen_end, nbeyond
     logical :: finite
 
@@ -74,9 +76,15 @@ contains
     if (allocated(failure)) return
     kb = find_node_set(mesh, 'b_bottom')
     finite = .true.
+    wc_min = 0.0_wp
+    dwc_min = 0.0_wp
+    wc_prev = 0.0_wp
     do
       call contact_step(model, pairs, state, err)
       if (err%failed()) exit
+      wc_min = min(wc_min, state%energy%contact)
+      dwc_min = min(dwc_min, state%energy%contact - wc_prev)
+      wc_prev = state%energy%contact
       finite = finite .and. ieee_is_finite(state%energy%kinetic) .and. ieee_is_finite(state%energy%internal) &
         .and. all(ieee_is_finite(pairs(1)%pressure))
       if (.not. finite) exit
@@ -87,9 +95,10 @@ contains
       err%failed()))
     call check(failure, finite, 'non-finite value during the slide')
     if (allocated(failure)) return
-    ! Nodes more than one slave element (1/9) beyond the master's right end
-    ! must be open with no stress.
-    x_master_end = maxval(mesh%x(1, find_set(mesh, 'a_top')) + state%u(1, find_set(mesh, 'a_top'))) + 1.0_wp/9.0_wp
+    ! Nodes beyond the master's right end (node-to-segment: more than one
+    ! slave element, 1/9, beyond it) must be open with no stress.
+    x_master_end = maxval(mesh%x(1, find_set(mesh, 'a_top')) + state%u(1, find_set(mesh, 'a_top')))
+    if (method == METHOD_NTS) x_master_end = x_master_end + 1.0_wp/9.0_wp
     nopen_end = 0
     nbeyond = 0
     max_open_pressure = 0.0_wp
@@ -102,13 +111,22 @@ contains
         end if
       end associate
     end do
-    write(*, '(a,f7.4,a,i0,a,i0,a,es10.3,a,es10.3)') '        slave moved ', sum(state%u(1, mesh%nsets(kb)%nodes)) / &
+    write(*, '(a,f7.4,a,i0,a,i0,a,es10.3,a,es10.3,a,es10.3,a,es10.3)') &
+      '        slave moved ', sum(state%u(1, mesh%nsets(kb)%nodes)) / &
       size(mesh%nsets(kb)%nodes), ', nodes beyond the master end ', nbeyond, ', open ', nopen_end, ', balance ', &
-      state%energy%balance/state%energy%scale, ', contact work / energy scale ', state%energy%contact/state%energy%scale
+      state%energy%balance/state%energy%scale, ', contact work / energy scale ', state%energy%contact/state%energy%scale, &
+      ', its least value ', wc_min/state%energy%scale, ', least step increment ', dwc_min/state%energy%scale
     call check(failure, nbeyond >= 4, 'the slave did not slide off (fewer than 4 nodes beyond the master end)')
     call check(failure, nopen_end == nbeyond, 'a slave node beyond the master''s end is in contact')
     call check(failure, max_open_pressure == 0.0_wp, 'a node past the master''s end carries a contact stress')
     call check(failure, abs(state%energy%balance) < 1.0e-10_wp*state%energy%scale, 'energy balance not exact')
+    ! Contact may give back only what the moving geometry of a rocking
+    ! block on the master's corner gives (measured: node-to-segment -8.1e-5,
+    ! mortar -3.5e-3 of the final energy scale at worst, both ending
+    ! positive); before mortar's corner rows it gave back 0.16 and kept
+    ! falling.
+    call check(failure, wc_min >= -1.0e-2_wp*state%energy%scale, 'contact gave back more than 1e-2 of the energy scale')
+    call check(failure, state%energy%contact >= 0.0_wp, 'contact gave energy over the whole slide')
   end subroutine slide_off_case
 
   function find_set(mesh, name) result(nodes)
