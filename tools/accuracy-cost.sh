@@ -78,8 +78,8 @@ if [ "$quick" = 1 ]; then
   paper_q4=""; paper_q8=""; knobs=0
 else
   hertz_q4="12 18 24 36 48"; hertz_q8="6 10 12 18"; hertz_methods="nts p0 p1"
-  catt_q4="12 18 24 36"; catt_q8="6 8 10"; catt_methods="nts p0 p1"
-  patch_q4="5 10 20 30"; patch_q8="5 10 12"; patch_methods="nts p0 p1"
+  catt_q4="12 18 24 36"; catt_q8="6 8 10 12"; catt_methods="nts p0 p1"
+  patch_q4="5 10 20 30"; patch_q8="5 10 12 15"; patch_methods="nts p0 p1"
   paper_q4="0.04 0.028 0.02 0.014 0.01"; paper_q8="0.08 0.056 0.04 0.028 0.02"; knobs=1
 fi
 PAPER_REF=q8_p1_L5   # the finest mortar P1 Q8 run: the paper scene's reference
