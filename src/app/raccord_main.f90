@@ -13,7 +13,7 @@ program raccord_main
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, &
-    EXIT_WALLCLOCK
+    EXIT_WALLCLOCK, EXIT_INTERNAL
   use raccord_log, only: log_open, log_close, log_info, log_warn, log_debug, log_error, log_raw, log_set_quiet, log_set_level, &
     LEVEL_DEBUG, log_unit
   use raccord_strings, only: str
@@ -46,6 +46,13 @@ program raccord_main
       import :: c_int
       integer(c_int), value :: status
     end subroutine c_exit
+    ! C exit: leave with a status, running the exit-time cleanup (the
+    ! Fortran units, the HDF5 library) as a STOP would, but printing
+    ! nothing: gfortran's ERROR STOP adds its own line and a backtrace.
+    subroutine c_exit_clean(status) bind(C, name='exit')
+      import :: c_int
+      integer(c_int), value :: status
+    end subroutine c_exit_clean
   end interface
 
   type(cli_t) :: cli
@@ -326,14 +333,16 @@ contains
       flush(output_unit)
       call c_exit(int(e%code, c_int))
     end if
+    ! The message above is the whole report: exit with the error's code
+    ! (doc/user-guide.md, exit codes) and no runtime text after it.
+    flush(output_unit)
     select case (e%code)
-    case (EXIT_USAGE);     error stop 1
-    case (EXIT_INPUT);     error stop 2
-    case (EXIT_NUMERIC);   error stop 3
-    case (EXIT_IO);        error stop 4
-    case (EXIT_WALLCLOCK); error stop 5
-    case (EXIT_OK);        stop
-    case default;          error stop 70
+    case (EXIT_USAGE, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_WALLCLOCK)
+      call c_exit_clean(int(e%code, c_int))
+    case (EXIT_OK)
+      stop
+    case default
+      call c_exit_clean(int(EXIT_INTERNAL, c_int))
     end select
   end subroutine finish
 end program raccord_main
