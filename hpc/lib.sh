@@ -149,11 +149,17 @@ hpc_job_case() {
     _child=$!
     trap 'hpc_got_signal=1; kill -USR1 "$_child" 2>/dev/null' USR1
     trap 'hpc_got_signal=1; kill -TERM "$_child" 2>/dev/null' TERM
+    # A trapped signal interrupts wait (status > 128) whether or not the
+    # child has ended yet; waiting again returns the child's own status
+    # (127 only if it was already collected: then keep what was seen).
+    _code=
     while :; do
       hpc_got_signal=0
       wait "$_child"
-      _code=$?
-      if [ "$hpc_got_signal" = 1 ] && kill -0 "$_child" 2>/dev/null; then continue; fi
+      _rc=$?
+      if [ "$_rc" -eq 127 ] && [ -n "$_code" ]; then break; fi
+      _code=$_rc
+      if [ "$hpc_got_signal" = 1 ] && [ "$_code" -gt 128 ]; then continue; fi
       break
     done
     trap - USR1 TERM
@@ -208,7 +214,7 @@ hpc_first_error() {
        END { if (!found && first != "") print first }' "$1" 2>/dev/null
 }
 
-# gfortran's backtrace after an error exit is noise in the case files
-# (doc/user-guide.md section 13); the message itself stays.
+# raccord's error exits print only its message; a run-time error (a bug)
+# would add gfortran's backtrace, kept short in the case files.
 : "${GFORTRAN_ERROR_BACKTRACE:=0}"
 export GFORTRAN_ERROR_BACKTRACE

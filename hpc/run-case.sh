@@ -118,11 +118,18 @@ trap usr1 USR1
 start=$(hpc_now)
 "$raccord" "$@" --output "$dir" "$deck" > "$dir/run.out" 2>&1 &
 pid=$!
+# A trapped signal interrupts wait (status > 128) whether or not raccord
+# has ended yet; waiting again returns raccord's own status (127 only if it
+# was already collected: then keep what was seen). Asking kill -0 instead
+# lost raccord's exit 5 when it ended between the signal and the test.
+code=
 while :; do
   got_signal=0
   wait "$pid"
-  code=$?
-  if [ "$got_signal" = 1 ] && kill -0 "$pid" 2>/dev/null; then continue; fi
+  rc=$?
+  if [ "$rc" -eq 127 ] && [ -n "$code" ]; then break; fi
+  code=$rc
+  if [ "$got_signal" = 1 ] && [ "$code" -gt 128 ]; then continue; fi
   break
 done
 pid=
