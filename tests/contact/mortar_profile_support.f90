@@ -6,6 +6,9 @@
 module mortar_profile_support
   use raccord_kinds, only: wp
   use raccord_scene_runner, only: scene_run_t
+  ! The sub-node half-width is the accuracy-cost study's own measure
+  ! (postproc/accuracy-cost/study_profile.f90): one definition for both.
+  use study_profile, only: zero_crossing_half_width
   implicit none
   private
 
@@ -59,33 +62,6 @@ contains
       prof%status = pair%status(order)
     end associate
   end subroutine profile_of_run
-
-  !> Half-width of the zone where the piecewise-linear field p_h (nodal
-  !> values p at x) is positive, around its peak: on each side the zero
-  !> crossing of p_h in the first interval where it changes sign, found by
-  !> linear interpolation. Sub-node: no assumption on the profile's shape.
-  pure real(wp) function zero_crossing_half_width(x, p) result(hw)
-    real(wp), intent(in) :: x(:), p(:)
-    integer :: ipk, i, n
-    real(wp) :: left, right
-    n = size(x)
-    ipk = maxloc(p, 1)
-    i = ipk
-    do while (i < n)
-      if (p(i + 1) <= 0.0_wp) exit
-      i = i + 1
-    end do
-    right = x(i)
-    if (i < n) right = x(i) + (x(i + 1) - x(i))*p(i)/(p(i) - p(i + 1))
-    i = ipk
-    do while (i > 1)
-      if (p(i - 1) <= 0.0_wp) exit
-      i = i - 1
-    end do
-    left = x(i)
-    if (i > 1) left = x(i) + (x(i - 1) - x(i))*p(i)/(p(i) - p(i - 1))
-    hw = 0.5_wp*(right - left)
-  end function zero_crossing_half_width
 
   !> Half-width of the active set: each edge midway between the outermost
   !> active node and its open neighbour (resolution h/2).
