@@ -38,6 +38,14 @@
 !> neighbouring chunks together in one pass (the nodes they share stay in
 !> cache) while leaving tens of groups per colour to share out.
 !> The thread count is the block's nthreads (1 unless set).
+!>
+!> Fresh forces without a zeroing pass: the first contribution to a node,
+!> in the fixed colour order (and, over a model's blocks, in block order),
+!> comes from one known group. claim_first_touch records, per group, the
+!> nodes it touches first; add_internal_force(..., fresh=.true.) sets those
+!> to zero just before the group scatters into them, while they are in
+!> cache anyway. That is the same arithmetic as zeroing f first (0 + x = x),
+!> so the bits do not change, and it saves a whole pass over f per step.
 module raccord_elastic_block
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
@@ -49,7 +57,7 @@ module raccord_elastic_block
   implicit none
   private
 
-  public :: init_elastic_block, add_internal_force, element_stiffness
+  public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
@@ -95,6 +103,9 @@ module raccord_elastic_block
     integer, private :: ncolour = 0
     integer, allocatable, private :: colour_ptr(:)   !< (ncolour + 1) colour c: colour_group(ptr(c):ptr(c+1)-1)
     integer, allocatable, private :: colour_group(:) !< group indices sorted by colour
+    !> nodes the k-th group in colour order touches first (claim_first_touch):
+    !> zero_node(zero_ptr(k) : zero_ptr(k+1)-1)
+    integer, allocatable, private :: zero_ptr(:), zero_node(:)
     real(wp), allocatable, private :: wts(:)         !< (ngp) Gauss weights
     real(wp), allocatable, private :: nref(:,:)      !< (nen, ngp) shape functions at the Gauss points
     real(wp), allocatable, private :: dnref(:,:,:)   !< (2, nen, ngp) natural derivatives at the Gauss points
@@ -210,6 +221,13 @@ contains
     call colour_chunks(blk%conn, size(x, 2), chunk_len*blk%group_len, blk%colour_ptr, blk%colour_group, err)
     if (err%failed()) return
     blk%ncolour = size(blk%colour_ptr) - 1
+    ! On its own a block claims every node it touches; a model re-claims
+    ! over all its blocks in order (raccord_model_build).
+    block
+      logical, allocatable :: claimed(:)
+      allocate(claimed(size(x, 2)), source=.false.)
+      call claim_first_touch(blk, claimed)
+    end block
 
     ! tensor Gauss rule, g = i + n1 (j - 1): xi = gx(i), eta = gx(j)
     do j = 1, n1
@@ -383,26 +401,70 @@ contains
     end do
   end function lagrange_1d
 
+  !> Record, for each group in colour order, the nodes of this block that
+  !> nobody touched before it: claimed(n) is true for nodes an earlier
+  !> group (of this block or of a block claimed before) touches, and is set
+  !> here for every node of this block. Over several blocks that share f,
+  !> claim them in the order add_internal_force is called on them.
+  subroutine claim_first_touch(blk, claimed)
+    type(elastic_block_t), intent(inout) :: blk
+    logical, intent(inout) :: claimed(:)
+    integer, allocatable :: first(:)
+    integer :: k, grp, e, a, node, nfirst
+    allocate(first(blk%nen*blk%nel))
+    if (allocated(blk%zero_ptr)) deallocate(blk%zero_ptr)
+    allocate(blk%zero_ptr(size(blk%colour_group) + 1))
+    nfirst = 0
+    do k = 1, size(blk%colour_group)
+      blk%zero_ptr(k) = nfirst + 1
+      grp = blk%colour_group(k)
+      do e = (grp - 1)*blk%group_len*chunk_len + 1, min(grp*blk%group_len*chunk_len, blk%nel)
+        do a = 1, blk%nen
+          node = blk%conn(a, e)
+          if (claimed(node)) cycle
+          claimed(node) = .true.
+          nfirst = nfirst + 1
+          first(nfirst) = node
+        end do
+      end do
+    end do
+    blk%zero_ptr(size(blk%colour_group) + 1) = nfirst + 1
+    blk%zero_node = first(1:nfirst)
+  end subroutine claim_first_touch
+
   !> f(2, nnode) += K u over the block's elements (theory eq. 6.1).
   !> Gather -> chunk kernel -> scatter; no allocation (chunk buffers are
   !> fixed-size locals, one set per thread). Colour after colour, the groups
   !> of a colour shared among blk%nthreads threads; one parallel
   !> region per call, the implicit barrier at the end of each colour's loop
-  !> keeps two colours from overlapping.
-  subroutine add_internal_force(blk, u, f)
+  !> keeps two colours from overlapping. With fresh = .true. each group
+  !> first sets the nodes it claimed (claim_first_touch) to zero, so that
+  !> over the blocks claimed together f = K u without zeroing f beforehand
+  !> (nodes no block claims are left as they are).
+  subroutine add_internal_force(blk, u, f, fresh)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: f(:,:)
+    logical, intent(in), optional :: fresh
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen)
-    integer :: col, k, grp, ic, e0, nc, i, a, node, nen
+    integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j
+    logical :: reset
     nen = blk%nen
+    reset = .false.
+    if (present(fresh)) reset = fresh
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen) &
-    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe)
+    !$omp   default(none) shared(blk, u, f, nen, reset) &
+    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
         grp = blk%colour_group(k)
+        if (reset) then
+          do j = blk%zero_ptr(k), blk%zero_ptr(k + 1) - 1
+            f(1, blk%zero_node(j)) = 0.0_wp
+            f(2, blk%zero_node(j)) = 0.0_wp
+          end do
+        end if
         chunks: do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
           e0 = (ic - 1)*chunk_len
           nc = min(chunk_len, blk%nel - e0)

@@ -8,7 +8,7 @@ module raccord_model_build
   use raccord_mesh, only: mesh_t, nodes_per_element, element_name, find_node_set, find_elem_set, &
     find_surface, ELEM_Q4, ELEM_Q8
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
-  use raccord_elastic_block, only: init_elastic_block, add_lumped_mass, add_body_force, max_eigenvalue_bound
+  use raccord_elastic_block, only: init_elastic_block, claim_first_touch, add_lumped_mass, add_body_force, max_eigenvalue_bound
   use raccord_edge_load, only: add_edge_traction
   use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t, requested_threads, set_model_threads
   implicit none
@@ -32,6 +32,7 @@ contains
     call copy_amplitudes(scene, model)
     call build_bodies(scene, mesh, model, elem_body, err)
     if (err%failed()) return
+    call claim_nodes(model)
     call build_boundaries(scene, mesh, model, elem_body, err)
     if (err%failed()) return
     model%has_damping = any(model%alpha > 0.0_wp)
@@ -39,6 +40,21 @@ contains
     if (model%nthreads > 1) call log_info('build_model', 'threads: ' // str(model%nthreads) // &
       ' (OMP_NUM_THREADS)')
   end subroutine build_model
+
+  !> Each node's internal force starts from the first block, in the order
+  !> compute_forces visits them, that touches it; claiming across the
+  !> blocks lets compute_forces skip zeroing f_int (raccord_elastic_block).
+  subroutine claim_nodes(model)
+    type(model_t), intent(inout) :: model
+    logical, allocatable :: claimed(:)
+    integer :: ib, k
+    allocate(claimed(model%nnode), source=.false.)
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        call claim_first_touch(model%bodies(ib)%blocks(k), claimed)
+      end do
+    end do
+  end subroutine claim_nodes
 
   subroutine copy_amplitudes(scene, model)
     type(scene_t), intent(in) :: scene

@@ -26,7 +26,7 @@ program test_parallel
   use raccord_central_difference, only: advance_state
   use raccord_contact_pair, only: contact_pair_t
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force, add_nodal_stress, &
-    element_stiffness
+    element_stiffness, claim_first_touch
   use raccord_test_meshes, only: rect_mesh
   use dynamics_support, only: add_bc, add_pair, contact_step, two_body_scene, prepare_contact
   implicit none
@@ -46,7 +46,9 @@ program test_parallel
     new_test('Q4, node-to-segment, mu = 0.3: 2 and 3 threads bitwise equal to 1', test_q4_nts), &
     new_test('Q8, mortar, mu = 0.3: 2 and 3 threads bitwise equal to 1', test_q8_mortar), &
     new_test('large Q4 and Q8 blocks (grouped chunks): f = K u, every element once, any thread count', &
-      test_large_blocks)])
+      test_large_blocks), &
+    new_test('fresh forces: two blocks claimed together give f = K u over any old f, any thread count', &
+      test_fresh_forces)])
 
 contains
 
@@ -179,6 +181,58 @@ contains
     call large_block_case(failure, ELEM_Q4, 80, 64)
     call large_block_case(failure, ELEM_Q8, 72, 64)
   end subroutine test_large_blocks
+
+  !> compute_forces does not zero f_int: each node is reset by the group
+  !> that touches it first, over the blocks claimed in call order. Two Q4
+  !> blocks of 1152 elements each (threaded) share a row of nodes; f starts
+  !> as garbage, with one extra node that no block touches. The result must
+  !> be bitwise that of zeroing f and adding both blocks, whatever the
+  !> thread count, and the extra node must keep its value. A group that
+  !> claimed a node too late, or twice, or not at all, would fail it.
+  subroutine test_fresh_forces(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(mesh_t) :: mesh
+    type(elastic_block_t) :: blk(2)
+    type(error_t) :: err
+    real(wp), allocatable :: u(:,:), f(:,:), fref(:,:)
+    logical, allocatable :: claimed(:)
+    integer :: n, half, nt, b
+    call rect_mesh(mesh, ELEM_Q4, 48, 48, 4.0_wp, 3.0_wp, distortion=0.2_wp)
+    n = mesh%nnode
+    half = mesh%nelem/2
+    call init_elastic_block(blk(1), ELEM_Q4, mesh%conn(1:4, 1:half), mesh%x, e, nu, .false., 1.0_wp, err)
+    if (.not. err%failed()) call init_elastic_block(blk(2), ELEM_Q4, mesh%conn(1:4, half+1:), mesh%x, &
+      2.0_wp*e, nu, .false., 1.0_wp, err)
+    call check(failure, .not. err%failed(), 'blocks: ' // err%message)
+    if (allocated(failure)) return
+    allocate(u(2, n + 1), source=0.0_wp)
+    u(1, 1:n) = 1.0e-3_wp*sin(mesh%x(1, :) + 0.3_wp*mesh%x(2, :))
+    u(2, 1:n) = 1.0e-3_wp*cos(0.7_wp*mesh%x(1, :) - mesh%x(2, :))
+    allocate(fref(2, n + 1), source=0.0_wp)
+    fref(:, n + 1) = -7.0_wp
+    call add_internal_force(blk(1), u, fref)
+    call add_internal_force(blk(2), u, fref)
+    allocate(claimed(n + 1), source=.false.)
+    call claim_first_touch(blk(1), claimed)
+    call claim_first_touch(blk(2), claimed)
+    call check(failure, count(claimed) == n .and. .not. claimed(n + 1), 'claimed ' // str(count(claimed)) // &
+      ' nodes, expected the ' // str(n) // ' of the mesh')
+    allocate(f(2, n + 1))
+    do nt = 1, 3
+      f = -7.0_wp
+      do b = 1, 2
+        blk(b)%nthreads = nt
+        call add_internal_force(blk(b), u, f, fresh=.true.)
+      end do
+      call check(failure, all(f == fref), str(nt) // ' threads: fresh forces differ from zero-then-add at ' // &
+        str(count(f /= fref)/2) // ' nodes (largest difference ' // str(maxval(abs(f - fref))) // ')')
+      ! twice in a row (as from one step to the next): the same again
+      do b = 1, 2
+        call add_internal_force(blk(b), u, f, fresh=.true.)
+      end do
+      call check(failure, all(f == fref), str(nt) // ' threads: a second fresh pass does not reset f')
+    end do
+  end subroutine test_fresh_forces
 
   subroutine large_block_case(failure, etype, nx, ny)
     type(failure_t), allocatable, intent(inout) :: failure
