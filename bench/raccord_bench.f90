@@ -11,11 +11,14 @@
 !>   2. step: a clamped plate model (build_model) marched with the time loop
 !>      of the program: compute_forces, predict_motion, update_energy,
 !>      advance_state (raccord_central_difference).
-!> Each timing is repeated N times (each at least SECONDS long); a line per
-!> thread count gives the min and the median in ns per element per call /
-!> step, the step's split into forces / predictor / rest (medians), the
-!> speed-up of the medians over 1 thread, the peak memory (VmHWM) of each
-!> phase and the relative energy balance after the steps. The header gives
+!> Each timing is repeated in N rounds (each timing at least SECONDS long);
+!> a round times 1 thread and then T threads back to back, so that a change
+!> in the machine's load (other processes, a neighbour on the host) hits
+!> both alike. A line per thread count gives the min and the median in ns
+!> per element per call / step, the step's split into forces / predictor /
+!> rest (medians), the speed-up over
+!> 1 thread (the median over the rounds of the ratio of the two
+!> back-to-back timings), the peak memory (VmHWM) of each phase and the relative energy balance after the steps. The header gives
 !> the load average, for the speed-up is only meaningful on a quiet machine.
 program raccord_bench
   use raccord_kinds, only: wp, i8
@@ -40,9 +43,12 @@ program raccord_bench
   if (stat /= 0) error stop 1
 
   write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
-  write(output_unit, '(a, i0, a)') '# min and median of ', nrep, ' repetitions; step split: forces / predictor / rest'
+  write(output_unit, '(a, i0, a)') '# min and median of ', nrep, &
+    ' rounds; step split: forces / predictor / rest'
   write(output_unit, '(a, i0, a)') '# threads: 1 and ', nthreads, ' (OpenMP; colour-ordered groups of ' // &
-    '32-element chunks, per-node loops in 64 fixed segments); spd = median(1 thread)/median(this line)'
+    '32-element chunks, per-node loops in 64 fixed segments)'
+  write(output_unit, '(a)') '# each round times 1 thread and then the other count back to back; ' // &
+    'spd = median over the rounds of time(1 thread)/time(this line)'
   write(output_unit, '(a)') '# load average (1, 5, 15 min) at start: ' // load_average()
   write(output_unit, '(a4, a9, a9, a4, a7, 4a9, 3a8, 2a6, 2a9, a7, a10)') 'type', 'elements', 'nodes', 'thr', &
     'steps', 'kern_min', 'kern_med', 'step_min', 'step_med', 'forces', 'predict', 'rest', 'spd_k', 'spd_s', &
@@ -166,7 +172,8 @@ contains
     integer, allocatable :: conn(:,:)
     integer :: nx, stat, nel, nnode, nthr(2), nt, k
     integer(i8) :: steps(2)
-    real(wp) :: kern(max_repeat, 2), step(max_repeat, 2), split(3, max_repeat, 2), mem_kern, mem_step, balance(2)
+    real(wp) :: kern(max_repeat, 2), step(max_repeat, 2), split(3, max_repeat, 2), mem_kern, mem_step, balance
+    real(wp) :: ceil_spd, t_alone, t_each
 
     nthr = [1, nthreads]
     nt = 2
@@ -188,10 +195,7 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    do k = 1, nt
-      blk%nthreads = nthr(k)
-      call bench_internal_force(blk, x, min_time, nrep, kern(:, k))
-    end do
+    call bench_internal_force(blk, x, nthr(1:nt), min_time, nrep, kern)
     mem_kern = real(peak_memory_kib(), wp)/1024.0_wp
     deallocate(blk)
 
@@ -202,70 +206,85 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    do k = 1, nt
-      call set_model_threads(model, nthr(k))
-      call bench_step(model, min_time, nrep, steps(k), step(:, k), split(:, :, k), balance(k))
-    end do
+    call bench_step(model, nthr(1:nt), min_time, nrep, steps, step, split, balance)
     mem_step = real(peak_memory_kib(), wp)/1024.0_wp
+    ! phase 3: what the machine gives T serial runs at once
+    if (nt > 1) call bench_ceiling(model, nthreads, min_time, nrep, ceil_spd, t_alone, t_each)
 
     do k = 1, nt
       write(output_unit, '(a4, i9, i9, i4, i7, 4f9.1, 3f8.1, 2f6.2, 2f9.1, f7.0, es10.1)') element_name(etype), &
         nel, nnode, nthr(k), steps(k), minval(kern(1:nrep, k)), median(kern(1:nrep, k)), &
         minval(step(1:nrep, k)), median(step(1:nrep, k)), median(split(1, 1:nrep, k)), &
         median(split(2, 1:nrep, k)), median(split(3, 1:nrep, k)), &
-        median(kern(1:nrep, 1))/median(kern(1:nrep, k)), median(step(1:nrep, 1))/median(step(1:nrep, k)), &
-        mem_kern, mem_step, mem_kern*1048576.0_wp/real(nel, wp), balance(k)
+        median(kern(1:nrep, 1)/kern(1:nrep, k)), median(step(1:nrep, 1)/step(1:nrep, k)), &
+        mem_kern, mem_step, mem_kern*1048576.0_wp/real(nel, wp), balance
     end do
+    if (nt > 1) write(output_unit, '(a, i0, a, i0, a, f0.2, a, f0.1, a, f0.1, a, f0.2, a, i0, a)') &
+      '# ceiling ' // element_name(etype) // ' ', nel, ': ', nthreads, ' serial runs at once give ', ceil_spd, &
+      'x the throughput of one (', t_each, ' ns per element and step each, ', t_alone, &
+      ' alone); the threaded step reaches ', median(step(1:nrep, 1)/step(1:nrep, nt))/ceil_spd, ' of it (', &
+      nrep, ' rounds, medians)'
     flush(output_unit)
   end subroutine run_case
 
   !> Time add_internal_force (each node reset by the group that touches it
-  !> first, fresh = .true., as compute_forces does):
-  !> nrep timings, each repeating the call until min_time has passed (at
-  !> least 3 calls, after one warm-up call); ns per element per call.
-  subroutine bench_internal_force(blk, x, min_time, nrep, ns)
-    type(elastic_block_t), intent(in) :: blk
+  !> first, fresh = .true., as compute_forces does) on each thread count of
+  !> nthr: nrep rounds, each timing every count in turn (back to back, so
+  !> that a change of the machine's load hits both alike), each timing
+  !> repeating the call until min_time has passed (at least 3 calls, after
+  !> one warm-up call); ns(r, k) ns per element per call.
+  subroutine bench_internal_force(blk, x, nthr, min_time, nrep, ns)
+    type(elastic_block_t), intent(inout) :: blk
     real(wp), intent(in) :: x(:,:), min_time
-    integer, intent(in) :: nrep
-    real(wp), intent(out) :: ns(:)
+    integer, intent(in) :: nthr(:), nrep
+    real(wp), intent(out) :: ns(:,:)
     real(wp), allocatable :: u(:,:), f(:,:)
     real(wp) :: t0, t
-    integer :: calls, r
+    integer :: calls, r, k
     allocate(u(2, size(x, 2)), f(2, size(x, 2)))
     u(1, :) = 1.0e-3_wp*sin(x(1, :) + 0.3_wp*x(2, :))
     u(2, :) = 1.0e-3_wp*cos(0.7_wp*x(1, :) - x(2, :))
     f = 0.0_wp
-    call add_internal_force(blk, u, f, fresh=.true.)
+    do k = 1, size(nthr)
+      blk%nthreads = nthr(k)
+      call add_internal_force(blk, u, f, fresh=.true.)
+    end do
     repetitions: do r = 1, nrep
-      calls = 0
-      t0 = wall_time()
-      do
-        call add_internal_force(blk, u, f, fresh=.true.)
-        calls = calls + 1
-        t = wall_time() - t0
-        if (calls >= 3 .and. t >= min_time) exit
-      end do
-      ns(r) = 1.0e9_wp*t/(real(calls, wp)*real(blk%nel, wp))
+      thread_counts: do k = 1, size(nthr)
+        blk%nthreads = nthr(k)
+        calls = 0
+        t0 = wall_time()
+        do
+          call add_internal_force(blk, u, f, fresh=.true.)
+          calls = calls + 1
+          t = wall_time() - t0
+          if (calls >= 3 .and. t >= min_time) exit
+        end do
+        ns(r, k) = 1.0e9_wp*t/(real(calls, wp)*real(blk%nel, wp))
+      end do thread_counts
     end do repetitions
     ! keep the result alive so the calls cannot be optimised away
     if (.not. (abs(sum(f)) < huge(1.0_wp))) write(output_unit, '(a)') '# non-finite internal force'
   end subroutine bench_internal_force
 
   !> March the model at 0.9 of the stable step with the program's step
-  !> sequence: nrep timings of at least min_time each (at least 3 steps);
-  !> ns per element per step in total and split into compute_forces,
-  !> predict_motion and update_energy + advance_state. balance: the
-  !> relative energy balance at the end (round-off for this undamped
-  !> linear model, so a wrong kernel shows up here).
-  subroutine bench_step(model, min_time, nrep, steps, ns, split, balance)
-    type(model_t), intent(in) :: model
+  !> sequence, on each thread count of nthr in turn: nrep rounds, each
+  !> timing every count back to back for at least min_time (at least 3
+  !> steps); one state marches on through all of them (the results do not
+  !> depend on the thread count). ns(r, k) ns per element per step in
+  !> total and split(:, r, k) into compute_forces, predict_motion and
+  !> update_energy + advance_state; steps(k) the steps timed on nthr(k).
+  !> balance: the relative energy balance at the end (round-off for this
+  !> undamped linear model, so a wrong kernel shows up here).
+  subroutine bench_step(model, nthr, min_time, nrep, steps, ns, split, balance)
+    type(model_t), intent(inout) :: model
+    integer, intent(in) :: nthr(:), nrep
     real(wp), intent(in) :: min_time
-    integer, intent(in) :: nrep
-    integer(i8), intent(out) :: steps
-    real(wp), intent(out) :: ns(:), split(:,:), balance
+    integer(i8), intent(out) :: steps(:)
+    real(wp), intent(out) :: ns(:,:), split(:,:,:), balance
     type(state_t) :: state
     real(wp) :: t0, t1, t2, t3, tf, tp, tr, scale
-    integer :: r, n
+    integer :: r, n, k
 
     call init_state(model, 0.9_wp*2.0_wp/sqrt(model%w2_bound), 0_i8, state)
     ! step 0 (as the program's start_march); then each step n is
@@ -276,30 +295,97 @@ contains
     call advance_state(state)
     steps = 0
     repetitions: do r = 1, nrep
-      tf = 0.0_wp
-      tp = 0.0_wp
-      tr = 0.0_wp
-      n = 0
-      time_steps: do
-        t0 = wall_time()
-        call compute_forces(model, state)
-        t1 = wall_time()
-        call predict_motion(model, state)
-        t2 = wall_time()
-        call update_energy(model, state)
-        call advance_state(state)
-        t3 = wall_time()
-        tf = tf + (t1 - t0)
-        tp = tp + (t2 - t1)
-        tr = tr + (t3 - t2)
-        n = n + 1
-        if (n >= 3 .and. tf + tp + tr >= min_time) exit
-      end do time_steps
-      steps = steps + n
-      scale = 1.0e9_wp/(real(n, wp)*real(model%nelem, wp))
-      ns(r) = (tf + tp + tr)*scale
-      split(:, r) = [tf, tp, tr]*scale
+      thread_counts: do k = 1, size(nthr)
+        call set_model_threads(model, nthr(k))
+        tf = 0.0_wp
+        tp = 0.0_wp
+        tr = 0.0_wp
+        n = 0
+        time_steps: do
+          t0 = wall_time()
+          call compute_forces(model, state)
+          t1 = wall_time()
+          call predict_motion(model, state)
+          t2 = wall_time()
+          call update_energy(model, state)
+          call advance_state(state)
+          t3 = wall_time()
+          tf = tf + (t1 - t0)
+          tp = tp + (t2 - t1)
+          tr = tr + (t3 - t2)
+          n = n + 1
+          if (n >= 3 .and. tf + tp + tr >= min_time) exit
+        end do time_steps
+        steps(k) = steps(k) + n
+        scale = 1.0e9_wp/(real(n, wp)*real(model%nelem, wp))
+        ns(r, k) = (tf + tp + tr)*scale
+        split(:, r, k) = [tf, tp, tr]*scale
+      end do thread_counts
     end do repetitions
     balance = state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
   end subroutine bench_step
+
+  !> The machine's ceiling for the step's speed-up: T serial runs of the
+  !> same model at once (one per thread, each on its own copy of the model),
+  !> against one run alone. If the T runs together do T times the steps of
+  !> one alone, the hardware scales; if they are slower each, the shared
+  !> memory system (bandwidth, caches) caps any threading of the step too.
+  !> Rounds as in bench_step (alone, then together, back to back); the
+  !> results: ceil_spd the median of T t_alone/t_together, t_alone and
+  !> t_each the medians in ns per element and step.
+  subroutine bench_ceiling(model, nthreads, min_time, nrep, ceil_spd, t_alone, t_each)
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: nthreads, nrep
+    real(wp), intent(in) :: min_time
+    real(wp), intent(out) :: ceil_spd, t_alone, t_each
+    type(model_t), allocatable :: copies(:)
+    type(state_t), allocatable :: states(:)
+    real(wp) :: alone(max_repeat), each(max_repeat), dt, t0, t, scale
+    integer :: r, n, k
+    allocate(copies(nthreads), states(nthreads))
+    dt = 0.9_wp*2.0_wp/sqrt(model%w2_bound)
+    do k = 1, nthreads
+      copies(k) = model
+      call set_model_threads(copies(k), 1)
+      call init_state(copies(k), dt, 0_i8, states(k))
+    end do
+    do r = 1, nrep
+      ! one run alone, as many steps as fill min_time (at least 3)
+      n = 0
+      t0 = wall_time()
+      do
+        call march(copies(1), states(1), 1)
+        n = n + 1
+        t = wall_time() - t0
+        if (n >= 3 .and. t >= min_time) exit
+      end do
+      scale = 1.0e9_wp/(real(n, wp)*real(model%nelem, wp))
+      alone(r) = t*scale
+      ! the same number of steps on every copy at once
+      t0 = wall_time()
+      !$omp parallel do num_threads(nthreads) schedule(static, 1) default(none) shared(copies, states, n, nthreads)
+      do k = 1, nthreads
+        call march(copies(k), states(k), n)
+      end do
+      !$omp end parallel do
+      each(r) = (wall_time() - t0)*scale
+    end do
+    ceil_spd = median(real(nthreads, wp)*alone(1:nrep)/each(1:nrep))
+    t_alone = median(alone(1:nrep))
+    t_each = median(each(1:nrep))
+  end subroutine bench_ceiling
+
+  !> nsteps steps of the program's sequence on model m, state st.
+  subroutine march(m, st, nsteps)
+    type(model_t), intent(in) :: m
+    type(state_t), intent(inout) :: st
+    integer, intent(in) :: nsteps
+    integer :: j
+    do j = 1, nsteps
+      call compute_forces(m, st)
+      call predict_motion(m, st)
+      call update_energy(m, st)
+      call advance_state(st)
+    end do
+  end subroutine march
 end program raccord_bench
