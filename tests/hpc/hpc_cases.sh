@@ -147,6 +147,13 @@ wait_for() {
   [ -e "$1" ]
 }
 
+# wait_for_line FILE TEXT SECONDS: until FILE has a line containing TEXT.
+wait_for_line() {
+  k=0
+  while ! grep -qF -- "$2" "$1" 2>/dev/null && [ "$k" -lt $(($3 * 10)) ]; do sleep 0.1; k=$((k + 1)); done
+  grep -qF -- "$2" "$1" 2>/dev/null
+}
+
 case "$case_name" in
 
 subst)
@@ -309,7 +316,11 @@ kill)
   sed '/^set SPEED/d' data/k.sweep > data/k.tmp && mv data/k.tmp data/k.sweep
   STUB_SLEEP=60 sh "$hpc/sweep-local.sh" -j 2 -r "$work/bin/raccord" -o sw data/k.sweep > run1.out 2>&1 &
   sweep_pid=$!
-  wait_for sw/fast1/case.h5 20 && wait_for sw/fast2/case.h5 20 && wait_for sw/slow/stub.pid 20
+  # Wait for the runner's own record of the fast cases: their case.h5 is
+  # there a moment before the runner has seen them end, and a TERM in that
+  # moment stops a case that was in fact complete.
+  wait_for_line run1.out 'case fast1: done' 20 && wait_for_line run1.out 'case fast2: done' 20 && \
+    wait_for sw/slow/stub.pid 20
   check "fast cases complete while the slow one runs" [ -e sw/fast2/case.h5 ]
   stub_pid=$(cat sw/slow/stub.pid 2>/dev/null)
   kill -TERM "$sweep_pid"
