@@ -7,7 +7,7 @@ module hertz_support
   implicit none
   private
 
-  public :: hertz_closed_form, profile_of, profile_measures, profile_difference
+  public :: hertz_closed_form, profile_of, profile_measures, profile_difference, normal_sum_excess
 
 contains
 
@@ -21,6 +21,19 @@ contains
     a = sqrt(4.0_wp*p_load*radius/(pi*e_star))
     p0 = 2.0_wp*p_load/(pi*a)
   end subroutine hertz_closed_form
+
+  !> Relative excess of the sum of the nodal normal forces (history column
+  !> contact<k>_N, pair%normal_sum) over the load P on a Hertz interface.
+  !> Each nodal force acts along the normal of the deformed interface; for
+  !> two bodies of one material each gives half the approach, so the
+  !> interface is y = x^2/(4R), tilted by theta = x/(2R). Equilibrium holds
+  !> for the vertical components, sum f cos(theta) = P, so to second order
+  !>   (N - P)/P = <theta^2/2>_p = (a/R)^2/8 <xi^2>_p = a^2/(32 R^2),
+  !> with <xi^2>_p = 1/4 the mean of (x/a)^2 over the elliptic pressure.
+  pure real(wp) function normal_sum_excess(a, radius) result(excess)
+    real(wp), intent(in) :: a, radius
+    excess = a**2/(32.0_wp*radius**2)
+  end function normal_sum_excess
 
   !> Contact stress of pair 1 against the current x of its slave nodes,
   !> sorted by x; status 0 where open.

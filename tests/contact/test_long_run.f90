@@ -22,7 +22,9 @@ program test_long_run
   use dynamics_support, only: add_bc, add_amplitude, add_pair, contact_step, two_body_scene, prepare_contact
   implicit none
 
-  logical :: full
+  ! save: the test procedures passed to run_tests use these, and static
+  ! storage spares them a trampoline (and the program an executable stack).
+  logical, save :: full
   character(len=16) :: arg
 
   full = .false.
