@@ -2,7 +2,7 @@
 # Install the Debian packages raccord needs to build, test and plot.
 # Runs apt-get only when a package is missing; uses sudo when not root.
 set -eu
-packages="gfortran cmake make liblapack-dev libopenblas-dev libhdf5-dev hdf5-tools gnuplot-nox"
+packages="gfortran cmake make liblapack-dev libblas-dev libhdf5-dev hdf5-tools gnuplot-nox"
 # Optional extras: gmsh (to remesh input/*.geo) and calculix-ccx (comparisons).
 if [ "${RACCORD_EXTRAS:-0}" = 1 ]; then packages="$packages gmsh calculix-ccx"; fi
 missing=""
