@@ -119,15 +119,50 @@ module raccord_elastic_block
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
   end type elastic_block_t
 
+  !> Element-level work: raccord_elastic_block_element.f90 (a submodule).
+  !> q4_detj and add_element_stress, private, are called from this module
+  !> too; they are defined there because gfortran gives a private procedure
+  !> defined here no symbol that a submodule can link to.
   interface
-    subroutine dsyev(jobz, uplo, n, a, lda, w, work, lwork, info)
-      import :: wp
-      character, intent(in) :: jobz, uplo
-      integer, intent(in) :: n, lda, lwork
-      real(wp), intent(inout) :: a(lda, *)
-      real(wp), intent(out) :: w(*), work(*)
-      integer, intent(out) :: info
-    end subroutine dsyev
+    !> Element stiffness ke(2 nen, 2 nen) = sum_g c B^T C B (theory eq. 3.2),
+    !> dof order (x1, y1, x2, y2, ...).
+    pure module subroutine element_stiffness(blk, e, ke)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(out) :: ke(:,:)
+    end subroutine element_stiffness
+    !> m(nnode) += lumped nodal masses (thickness included).
+    pure module subroutine add_lumped_mass(blk, density, m)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: density
+      real(wp), intent(inout) :: m(:)
+    end subroutine add_lumped_mass
+    !> f(2, nnode) += consistent nodal forces of a constant force per unit
+    !> volume b(2) (theory eq. 5.2).
+    pure module subroutine add_body_force(blk, b, f)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: b(2)
+      real(wp), intent(inout) :: f(:,:)
+    end subroutine add_body_force
+    !> Upper bound of omega_max^2 of the assembled lumped system (theory
+    !> eq. 4.3); stable step dt <= 2/sqrt(w2).
+    module function max_eigenvalue_bound(blk, density) result(w2)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: density
+      real(wp) :: w2
+    end function max_eigenvalue_bound
+    !> detJ of the Q4 map (eq. 6.2) at (xi, eta).
+    pure module function q4_detj(geo, xi, eta) result(detj)
+      real(wp), intent(in) :: geo(ngeo), xi, eta
+      real(wp) :: detj
+    end function q4_detj
+    !> The nodal stress contributions of element e (add_nodal_stress).
+    pure module subroutine add_element_stress(blk, e, u, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(in) :: u(:,:)
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_element_stress
   end interface
 
 contains
@@ -362,34 +397,6 @@ contains
     end do
   end subroutine init_q4_data
 
-  !> detJ of the Q4 map at (xi, eta): j0 + j1 xi + j2 eta (eq. 6.2).
-  pure real(wp) function q4_detj(geo, xi, eta) result(detj)
-    real(wp), intent(in) :: geo(ngeo), xi, eta
-    detj = (geo(1)*geo(5) - geo(2)*geo(4)) + xi*(geo(1)*geo(6) - geo(3)*geo(4)) + &
-      eta*(geo(3)*geo(5) - geo(2)*geo(6))
-  end function q4_detj
-
-  !> Jacobian J_ik = dx_i/dxi_k of the Q4 map at (xi, eta) (eqs. 1.4, 6.2).
-  pure function q4_jacobian(geo, xi, eta) result(jac)
-    real(wp), intent(in) :: geo(ngeo), xi, eta
-    real(wp) :: jac(2, 2)
-    jac(1, 1) = geo(1) + geo(3)*eta
-    jac(1, 2) = geo(2) + geo(3)*xi
-    jac(2, 1) = geo(4) + geo(6)*eta
-    jac(2, 2) = geo(5) + geo(6)*xi
-  end function q4_jacobian
-
-  !> c = w_g detJ h of element e at Gauss point g.
-  pure real(wp) function gauss_c(blk, e, g) result(cg)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e, g
-    if (blk%etype == ELEM_Q4) then
-      cg = blk%wts(g)*blk%thickness*q4_detj(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
-    else
-      cg = blk%c(g, e)
-    end if
-  end function gauss_c
-
   !> 1D Lagrange basis polynomial i through the points p, at s.
   pure real(wp) function lagrange_1d(p, i, s)
     real(wp), intent(in) :: p(:), s
@@ -401,6 +408,15 @@ contains
     end do
   end function lagrange_1d
 
+  !> The elements e0..e1 of group grp (group_len consecutive chunks).
+  pure subroutine group_elements(blk, grp, e0, e1)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: grp
+    integer, intent(out) :: e0, e1
+    e0 = (grp - 1)*blk%group_len*chunk_len + 1
+    e1 = min(grp*blk%group_len*chunk_len, blk%nel)
+  end subroutine group_elements
+
   !> Record, for each group in colour order, the nodes of this block that
   !> nobody touched before it: claimed(n) is true for nodes an earlier
   !> group (of this block or of a block claimed before) touches, and is set
@@ -410,15 +426,15 @@ contains
     type(elastic_block_t), intent(inout) :: blk
     logical, intent(inout) :: claimed(:)
     integer, allocatable :: first(:)
-    integer :: k, grp, e, a, node, nfirst
+    integer :: k, e, e0, e1, a, node, nfirst
     allocate(first(blk%nen*blk%nel))
     if (allocated(blk%zero_ptr)) deallocate(blk%zero_ptr)
     allocate(blk%zero_ptr(size(blk%colour_group) + 1))
     nfirst = 0
     do k = 1, size(blk%colour_group)
       blk%zero_ptr(k) = nfirst + 1
-      grp = blk%colour_group(k)
-      do e = (grp - 1)*blk%group_len*chunk_len + 1, min(grp*blk%group_len*chunk_len, blk%nel)
+      call group_elements(blk, blk%colour_group(k), e0, e1)
+      do e = e0, e1
         do a = 1, blk%nen
           node = blk%conn(a, e)
           if (claimed(node)) cycle
@@ -607,158 +623,6 @@ contains
     end do gauss
   end subroutine kernel_q8
 
-  !> sqrt(c) dN_a/dx (row 1) and dN_a/dy (row 2) of element e at Gauss point g.
-  pure subroutine scaled_gradients(blk, e, g, gr)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e, g
-    real(wp), intent(out) :: gr(:,:)
-    real(wp) :: h11, h21, h12, h22, jac(2, 2), detj, sq
-    integer :: ic, il, a
-    if (blk%etype == ELEM_Q4) then
-      ! H = sqrt(c) J^-1 from the map (eqs. 1.4, 6.2), as stored for Q8
-      jac = q4_jacobian(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
-      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
-      sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
-      h11 = sq*jac(2, 2)
-      h21 = -sq*jac(2, 1)
-      h12 = -sq*jac(1, 2)
-      h22 = sq*jac(1, 1)
-    else
-      ic = (e - 1)/chunk_len + 1
-      il = e - (ic - 1)*chunk_len
-      h11 = blk%h(il, 1, g, ic)
-      h21 = blk%h(il, 2, g, ic)
-      h12 = blk%h(il, 3, g, ic)
-      h22 = blk%h(il, 4, g, ic)
-    end if
-    do a = 1, blk%nen
-      gr(1, a) = blk%dnref(1, a, g)*h11 + blk%dnref(2, a, g)*h21
-      gr(2, a) = blk%dnref(1, a, g)*h12 + blk%dnref(2, a, g)*h22
-    end do
-  end subroutine scaled_gradients
-
-  !> Element stiffness ke(2 nen, 2 nen) = sum_g c B^T C B (theory eq. 3.2),
-  !> dof order (x1, y1, x2, y2, ...). For Q4 this is the Gauss sum itself,
-  !> not the split the kernel uses, so the tests compare the two.
-  pure subroutine element_stiffness(blk, e, ke)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e
-    real(wp), intent(out) :: ke(:,:)
-    real(wp) :: gr(2, max_nen), l2m
-    integer :: g, a, b, nen
-    nen = blk%nen
-    l2m = blk%lam + 2.0_wp*blk%mu
-    ke = 0.0_wp
-    do g = 1, blk%ngp
-      call scaled_gradients(blk, e, g, gr)
-      do b = 1, nen
-        do a = 1, nen
-          ke(2*a - 1, 2*b - 1) = ke(2*a - 1, 2*b - 1) + l2m*gr(1, a)*gr(1, b) + blk%mu*gr(2, a)*gr(2, b)
-          ke(2*a - 1, 2*b) = ke(2*a - 1, 2*b) + blk%lam*gr(1, a)*gr(2, b) + blk%mu*gr(2, a)*gr(1, b)
-          ke(2*a, 2*b - 1) = ke(2*a, 2*b - 1) + blk%lam*gr(2, a)*gr(1, b) + blk%mu*gr(1, a)*gr(2, b)
-          ke(2*a, 2*b) = ke(2*a, 2*b) + l2m*gr(2, a)*gr(2, b) + blk%mu*gr(1, a)*gr(1, b)
-        end do
-      end do
-    end do
-  end subroutine element_stiffness
-
-  !> Lumped masses of element e (theory eq. 4.1-4.2): row sum of the
-  !> consistent mass for Q4, HRZ diagonal scaling for Q8.
-  pure subroutine element_lumped_mass(blk, e, density, me)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e
-    real(wp), intent(in) :: density
-    real(wp), intent(out) :: me(:)
-    real(wp) :: total, dsum, cg
-    integer :: g, nen
-    nen = blk%nen
-    me(1:nen) = 0.0_wp
-    total = 0.0_wp
-    do g = 1, blk%ngp
-      cg = gauss_c(blk, e, g)
-      total = total + density*cg
-      if (blk%etype == ELEM_Q8) then
-        me(1:nen) = me(1:nen) + density*cg*blk%nref(:, g)**2
-      else
-        me(1:nen) = me(1:nen) + density*cg*blk%nref(:, g)
-      end if
-    end do
-    if (blk%etype == ELEM_Q8) then
-      dsum = sum(me(1:nen))
-      me(1:nen) = me(1:nen)*(total/dsum)
-    end if
-  end subroutine element_lumped_mass
-
-  !> m(nnode) += lumped nodal masses (thickness included).
-  pure subroutine add_lumped_mass(blk, density, m)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: density
-    real(wp), intent(inout) :: m(:)
-    real(wp) :: me(max_nen)
-    integer :: e
-    do e = 1, blk%nel
-      call element_lumped_mass(blk, e, density, me)
-      m(blk%conn(:, e)) = m(blk%conn(:, e)) + me(1:blk%nen)
-    end do
-  end subroutine add_lumped_mass
-
-  !> f(2, nnode) += consistent nodal forces int N_a b dV of a constant force
-  !> per unit volume b(2) (theory eq. 5.2).
-  pure subroutine add_body_force(blk, b, f)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: b(2)
-    real(wp), intent(inout) :: f(:,:)
-    integer :: e, g, a, node
-    real(wp) :: cg
-    do e = 1, blk%nel
-      do g = 1, blk%ngp
-        cg = gauss_c(blk, e, g)
-        do a = 1, blk%nen
-          node = blk%conn(a, e)
-          f(:, node) = f(:, node) + blk%nref(a, g)*cg*b
-        end do
-      end do
-    end do
-  end subroutine add_body_force
-
-  !> Upper bound of omega_max^2 of the assembled lumped system: the largest
-  !> element eigenvalue lambda_max(Ke, Me) (theory eq. 4.3), from LAPACK
-  !> dsyev on Me^-1/2 Ke Me^-1/2. Stable step: dt <= 2/sqrt(w2).
-  !> Should dsyev fail, the element's Gershgorin bound (also an upper bound)
-  !> is used instead.
-  function max_eigenvalue_bound(blk, density) result(w2)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: density
-    real(wp) :: w2
-    integer, parameter :: nmax = 2*max_nen, lwork = 8*nmax
-    real(wp) :: ke(nmax, nmax), me(max_nen), s(nmax), ev(nmax), work(lwork)
-    integer :: e, n, i, j, info
-    w2 = 0.0_wp
-    n = 2*blk%nen
-    do e = 1, blk%nel
-      call element_stiffness(blk, e, ke(1:n, 1:n))
-      call element_lumped_mass(blk, e, density, me)
-      do i = 1, blk%nen
-        s(2*i - 1:2*i) = 1.0_wp/sqrt(me(i))
-      end do
-      do j = 1, n
-        do i = 1, n
-          ke(i, j) = s(i)*ke(i, j)*s(j)
-        end do
-      end do
-      call dsyev('N', 'U', n, ke, nmax, ev, work, lwork, info)
-      if (info == 0) then
-        w2 = max(w2, ev(n))
-      else
-        ! dsyev destroyed the matrix: rebuild it for the Gershgorin bound
-        call element_stiffness(blk, e, ke(1:n, 1:n))
-        do i = 1, n
-          w2 = max(w2, sum(abs(ke(i, 1:n))*s(1:n))*s(i))
-        end do
-      end if
-    end do
-  end function max_eigenvalue_bound
-
   !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
   !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
   !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
@@ -768,15 +632,15 @@ contains
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: s(:,:), wsum(:)
-    integer :: col, k, grp, e
+    integer :: col, k, e, e0, e1
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, s, wsum) &
-    !$omp   private(col, k, grp, e)
+    !$omp   private(col, k, e, e0, e1)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
-        grp = blk%colour_group(k)
-        do e = (grp - 1)*blk%group_len*chunk_len + 1, min(grp*blk%group_len*chunk_len, blk%nel)
+        call group_elements(blk, blk%colour_group(k), e0, e1)
+        do e = e0, e1
           call add_element_stress(blk, e, u, s, wsum)
         end do
       end do groups
@@ -785,34 +649,4 @@ contains
     !$omp end parallel
   end subroutine add_nodal_stress
 
-  !> The nodal stress contributions of element e (add_nodal_stress).
-  pure subroutine add_element_stress(blk, e, u, s, wsum)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e
-    real(wp), intent(in) :: u(:,:)
-    real(wp), intent(inout) :: s(:,:), wsum(:)
-    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs
-    integer :: g, a, nen
-    nen = blk%nen
-    ue(:, 1:nen) = u(:, blk%conn(:, e))
-    do g = 1, blk%ngp
-      call scaled_gradients(blk, e, g, gr)
-      rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
-      ! grad u_ij = du_i/dx_j (theory eq. 3.1)
-      gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
-      tr = blk%lam*(gu(1, 1) + gu(2, 2))
-      sg(1, g) = tr + 2.0_wp*blk%mu*gu(1, 1)
-      sg(2, g) = tr + 2.0_wp*blk%mu*gu(2, 2)
-      sg(3, g) = blk%mu*(gu(1, 2) + gu(2, 1))
-      if (blk%plane_stress) then
-        sg(4, g) = 0.0_wp
-      else
-        sg(4, g) = blk%poisson*(sg(1, g) + sg(2, g))
-      end if
-    end do
-    do a = 1, nen
-      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
-      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
-    end do
-  end subroutine add_element_stress
 end module raccord_elastic_block
