@@ -292,10 +292,7 @@ contains
     call init_state(model, 0.9_wp*2.0_wp/sqrt(model%w2_bound), 0_i8, state)
     ! step 0 (as the program's start_march); then each step n is
     ! forces, predictor and energy at t(n), and the move to n+1
-    call compute_forces(model, state)
-    call predict_motion(model, state)
-    call update_energy(model, state)
-    call advance_state(state)
+    call march(model, state, 1)
     steps = 0
     repetitions: do r = 1, nrep
       thread_counts: do k = 1, size(nthr)

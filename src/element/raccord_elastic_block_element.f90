@@ -4,6 +4,8 @@
 !> against), the lumped mass, the body force, the element eigenvalue bound
 !> of the stable step, and each element's share of the nodal stress
 !> recovery (theory sections 1-5 and 7).
+!> The procedures the parent declares (its interface block gives their
+!> arguments) are defined here with `module procedure`.
 submodule (raccord_elastic_block) raccord_elastic_block_element
   implicit none
 
@@ -21,12 +23,10 @@ submodule (raccord_elastic_block) raccord_elastic_block_element
 contains
 
   !> detJ of the Q4 map at (xi, eta): j0 + j1 xi + j2 eta (eq. 6.2).
-  pure module function q4_detj(geo, xi, eta) result(detj)
-    real(wp), intent(in) :: geo(ngeo), xi, eta
-    real(wp) :: detj
+  module procedure q4_detj
     detj = (geo(1)*geo(5) - geo(2)*geo(4)) + xi*(geo(1)*geo(6) - geo(3)*geo(4)) + &
       eta*(geo(3)*geo(5) - geo(2)*geo(6))
-  end function q4_detj
+  end procedure q4_detj
 
   !> Jacobian J_ik = dx_i/dxi_k of the Q4 map at (xi, eta) (eqs. 1.4, 6.2).
   pure function q4_jacobian(geo, xi, eta) result(jac)
@@ -82,10 +82,7 @@ contains
   !> Element stiffness ke(2 nen, 2 nen) = sum_g c B^T C B (theory eq. 3.2),
   !> dof order (x1, y1, x2, y2, ...). For Q4 this is the Gauss sum itself,
   !> not the split the kernel uses, so the tests compare the two.
-  pure module subroutine element_stiffness(blk, e, ke)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e
-    real(wp), intent(out) :: ke(:,:)
+  module procedure element_stiffness
     real(wp) :: gr(2, max_nen), l2m
     integer :: g, a, b, nen
     nen = blk%nen
@@ -102,7 +99,7 @@ contains
         end do
       end do
     end do
-  end subroutine element_stiffness
+  end procedure element_stiffness
 
   !> Lumped masses of element e (theory eq. 4.1-4.2): row sum of the
   !> consistent mass for Q4, HRZ diagonal scaling for Q8.
@@ -132,24 +129,18 @@ contains
   end subroutine element_lumped_mass
 
   !> m(nnode) += lumped nodal masses (thickness included).
-  pure module subroutine add_lumped_mass(blk, density, m)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: density
-    real(wp), intent(inout) :: m(:)
+  module procedure add_lumped_mass
     real(wp) :: me(max_nen)
     integer :: e
     do e = 1, blk%nel
       call element_lumped_mass(blk, e, density, me)
       m(blk%conn(:, e)) = m(blk%conn(:, e)) + me(1:blk%nen)
     end do
-  end subroutine add_lumped_mass
+  end procedure add_lumped_mass
 
   !> f(2, nnode) += consistent nodal forces int N_a b dV of a constant force
   !> per unit volume b(2) (theory eq. 5.2).
-  pure module subroutine add_body_force(blk, b, f)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: b(2)
-    real(wp), intent(inout) :: f(:,:)
+  module procedure add_body_force
     integer :: e, g, a, node
     real(wp) :: cg
     do e = 1, blk%nel
@@ -161,17 +152,14 @@ contains
         end do
       end do
     end do
-  end subroutine add_body_force
+  end procedure add_body_force
 
   !> Upper bound of omega_max^2 of the assembled lumped system: the largest
   !> element eigenvalue lambda_max(Ke, Me) (theory eq. 4.3), from LAPACK
   !> dsyev on Me^-1/2 Ke Me^-1/2. Stable step: dt <= 2/sqrt(w2).
   !> Should dsyev fail, the element's Gershgorin bound (also an upper bound)
   !> is used instead.
-  module function max_eigenvalue_bound(blk, density) result(w2)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: density
-    real(wp) :: w2
+  module procedure max_eigenvalue_bound
     integer, parameter :: nmax = 2*max_nen, lwork = 8*nmax
     real(wp) :: ke(nmax, nmax), me(max_nen), s(nmax), ev(nmax), work(lwork)
     integer :: e, n, i, j, info
@@ -199,14 +187,10 @@ contains
         end do
       end if
     end do
-  end function max_eigenvalue_bound
+  end procedure max_eigenvalue_bound
 
   !> The nodal stress contributions of element e (add_nodal_stress).
-  pure module subroutine add_element_stress(blk, e, u, s, wsum)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: e
-    real(wp), intent(in) :: u(:,:)
-    real(wp), intent(inout) :: s(:,:), wsum(:)
+  module procedure add_element_stress
     real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs
     integer :: g, a, nen
     nen = blk%nen
@@ -230,5 +214,5 @@ contains
       s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
       wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
     end do
-  end subroutine add_element_stress
+  end procedure add_element_stress
 end submodule raccord_elastic_block_element

@@ -19,22 +19,13 @@ program test_hertz_mortar
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
   use raccord_error, only: error_t
   use raccord_scene_runner, only: scene_run_t, run_deck
-  use hertz_support, only: hertz_closed_form, normal_sum_excess
+  use hertz_support, only: hertz_closed_form, check_resultants
   use mortar_profile_support, only: profile_t, profile_of_run, zero_crossing_half_width, active_half_width, &
     interior_difference
   implicit none
 
   real(wp), parameter :: P_LOAD = 8000.0_wp     !< 400 MPa on the 20 mm top (doc/scenes.md section 2)
   real(wp), parameter :: RADIUS = 10.0_wp
-  !> Equilibrium at rest: the vector resultant of the contact forces is the
-  !> load, to the dynamic remainder and round-off (measured 7e-11 to 1e-10
-  !> in both Hertz tests; the bound leaves a factor 100).
-  real(wp), parameter :: RESULTANT_TOL = 1.0e-8_wp
-  !> The normal-force sum against its second-order closed form
-  !> (hertz_support, normal_sum_excess); the discrete interface only
-  !> approximates the tilt: measured within 1.2 % on the moderate mesh and
-  !> 2.6 % on the coarse one (doc/verification.md).
-  real(wp), parameter :: EXCESS_TOL = 0.05_wp
   !> Node-to-segment's swap asymmetry on the same mesh and measure, written
   !> by the hertz_nts test of this run (CTest fixture) to
   !> hertz_nts_interior_swap.txt (its `pressure` output over |x| <= 0.8 a).
@@ -94,12 +85,7 @@ contains
       ' %), half-width zero crossing ', 100.0_wp*(hw/a - 1.0_wp), ' % (active set ', &
       100.0_wp*(hw_set/a - 1.0_wp), ' %), |Fy|/P - 1 ', 100.0_wp*(force/P_LOAD - 1.0_wp), ' %, RMS/p0 ', &
       rms_error(prof), ', energy ', abs(run%state%energy%balance)/run%state%energy%scale
-    write(*, '(a,es10.2,a,es10.3,a,es10.3)') '        resultant |Fy|/P - 1 ', force/P_LOAD - 1.0_wp, &
-      '; normal-force sum (N - P)/P ', run%pairs(1)%normal_sum/P_LOAD - 1.0_wp, ', closed form ', &
-      normal_sum_excess(a, RADIUS)
-    call check_close(failure, force, P_LOAD, 'contact force = P at rest', rel_tol=RESULTANT_TOL)
-    call check_close(failure, run%pairs(1)%normal_sum/P_LOAD - 1.0_wp, normal_sum_excess(a, RADIUS), &
-      'sum of nodal normal forces above P by the tilt of the deformed interface, a^2/(32 R^2)', rel_tol=EXCESS_TOL)
+    call check_resultants(failure, run, P_LOAD, a, RADIUS)
     ! Energy balance relative to the largest energy, at the end of the run.
     ! Not run%worst_balance: at step 0 the energy scale is still 0 while the
     ! mortar gap of the curved master (see doc/verification.md) already moves

@@ -6,19 +6,10 @@ program test_hertz_nts
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
   use raccord_error, only: error_t
   use raccord_scene_runner, only: scene_run_t, run_deck
-  use hertz_support, only: hertz_closed_form, profile_of, profile_measures, profile_difference, normal_sum_excess
+  use hertz_support, only: hertz_closed_form, profile_of, profile_measures, profile_difference, check_resultants
   use mortar_profile_support, only: interior_difference
   implicit none
 
-  !> Equilibrium at rest: the vector resultant of the contact forces is the
-  !> load, to the dynamic remainder and round-off (measured 7e-11 to 1e-10
-  !> in both Hertz tests; the bound leaves a factor 100).
-  real(wp), parameter :: RESULTANT_TOL = 1.0e-8_wp
-  !> The normal-force sum against its second-order closed form
-  !> (hertz_support, normal_sum_excess); the discrete interface only
-  !> approximates the tilt: measured within 1.2 % on the moderate mesh and
-  !> 2.6 % on the coarse one (doc/verification.md).
-  real(wp), parameter :: EXCESS_TOL = 0.05_wp
   ! save: the test procedures passed to run_tests use these, and static
   ! storage spares them a trampoline (and the program an executable stack).
   real(wp), save :: a, p0
@@ -52,12 +43,7 @@ contains
       ' %), |Fy| ', abs(run%pairs(1)%force(2)), ', worst energy balance ', run%worst_balance
     call check_close(failure, peak, p0, 'peak pressure against Hertz p0', rel_tol=0.05_wp)
     call check_close(failure, half_width, a, 'contact half-width against Hertz a', rel_tol=0.05_wp)
-    write(*, '(a,es10.2,a,es10.3,a,es10.3)') '        resultant |Fy|/P - 1 ', abs(run%pairs(1)%force(2))/8000.0_wp - &
-      1.0_wp, '; normal-force sum (N - P)/P ', run%pairs(1)%normal_sum/8000.0_wp - 1.0_wp, ', closed form ', &
-      normal_sum_excess(a, 10.0_wp)
-    call check_close(failure, abs(run%pairs(1)%force(2)), 8000.0_wp, 'contact force = P at rest', rel_tol=RESULTANT_TOL)
-    call check_close(failure, run%pairs(1)%normal_sum/8000.0_wp - 1.0_wp, normal_sum_excess(a, 10.0_wp), &
-      'sum of nodal normal forces above P by the tilt of the deformed interface, a^2/(32 R^2)', rel_tol=EXCESS_TOL)
+    call check_resultants(failure, run, 8000.0_wp, a, 10.0_wp)
     call check(failure, run%worst_balance < 1.0e-10_wp, 'energy balance not exact')
   end subroutine hertz_case
 
