@@ -206,7 +206,12 @@ contains
       call h5_read_i8(file, '/state/counters', two, where, err)
       call h5_read_real(file, '/state/time_dt', td, where, err)
       if (err%failed()) exit steps
-      if (two(2) /= state%nsteps .or. td(2) /= state%dt) then
+      if (state%adaptive) then
+        ! variable step (finite strain): the step count and the last step
+        ! are the run's own, taken from the checkpoint
+        state%nsteps = two(2)
+        state%dt = td(2)
+      else if (two(2) /= state%nsteps .or. td(2) /= state%dt) then
         call raise_error(err, EXIT_INPUT, 'restart refused: ' // where // ' has ' // str(two(2)) // &
           ' steps of dt = ' // str(td(2)) // ', this run plans ' // str(state%nsteps) // ' of dt = ' // &
           str(state%dt) // ' (another raccord build, or a changed mesh file?)')

@@ -27,7 +27,7 @@ program raccord_main
   use raccord_mesh_io, only: read_mesh
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
-  use raccord_time_step, only: time_plan_t, choose_time_step
+  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
@@ -122,6 +122,8 @@ program raccord_main
 
   ! Phase 5: march in time, from t = 0 or from the checkpoint.
   call init_state(model, plan%dt, plan%nsteps, state)
+  state%t_end = plan%t_end
+  state%safety = scene%time%safety
   if (restart) then
     call resume_run()
   else
@@ -134,6 +136,14 @@ program raccord_main
 
   time_steps: do
     call compute_forces(model, state)        ! f_int(u(n)), f_ext(t(n))
+    if (model%has_finite) then
+      ! Finite strain: no inverted element, and the stable step of the
+      ! deformed mesh (a variable step, raccord_time_step).
+      call check_deformation(model, state, err)
+      if (err%failed()) call finish(err)
+      call adapt_time_step(model, state, err)
+      if (err%failed()) call finish(err)
+    end if
     call predict_motion(model, state)        ! (CD-1), (CD-2): v(n+1/2), u*(n+1); reactions
     ! Forward increment: the multipliers lambda(n) make the contact and
     ! friction conditions (paper eq. 19) hold at t(n+1); u(n+1) and v(n+1/2)

@@ -239,6 +239,10 @@ contains
     if (out%stress) then
       fields = [character(len=16) :: fields, 'stress']
       ncomps = [ncomps, 4]
+      if (model%has_finite) then
+        fields = [character(len=16) :: fields, 'strain']
+        ncomps = [ncomps, 4]
+      end if
     end if
     call results_resume(out%res, stem, model%nnode, result_blocks(model), fields, ncomps, mark%frames_written, err)
     if (err%failed()) return
@@ -474,6 +478,22 @@ contains
       end do
       call results_write_nodal(out%res, 'stress', out%s_node, err)
       if (err%failed()) return
+      ! With a finite-strain body, the strain too: logarithmic in finite
+      ! bodies, small strain in the others (doc/output-format.md).
+      if (model%has_finite) then
+        out%s_node = 0.0_wp
+        out%wsum = 0.0_wp
+        do ib = 1, size(model%bodies)
+          do k = 1, size(model%bodies(ib)%blocks)
+            call add_nodal_stress(model%bodies(ib)%blocks(k), state%u, out%s_node, out%wsum, strain=.true.)
+          end do
+        end do
+        do j = 1, model%nnode
+          if (out%wsum(j) > 0.0_wp) out%s_node(:, j) = out%s_node(:, j)/out%wsum(j)
+        end do
+        call results_write_nodal(out%res, 'strain', out%s_node, err)
+        if (err%failed()) return
+      end if
     end if
     call results_end_frame(out%res, err)
     if (err%failed()) return

@@ -14,6 +14,7 @@ module raccord_run_report
   use raccord_output, only: output_t, wall_seconds
   use raccord_contact_pair, only: contact_pair_t
   use raccord_scene, only: METHOD_NTS
+  use raccord_material, only: KIN_FINITE, kinematics_name, material_name, volumetric_name
   implicit none
   private
 
@@ -57,6 +58,8 @@ contains
         call log_raw('body    ' // b%name // ': ' // str(size(b%elems)) // ' elements (' // &
           block_types(b) // '), E = ' // str(s%young, 4) // ', nu = ' // str(s%poisson, 3) // &
           ', rho = ' // str(s%density, 4) // ', ' // merge('plane stress', 'plane strain', s%plane_stress) // &
+          ', ' // kinematics_name(s%kinematics) // ' strain, ' // material_name(s%material) // &
+          finite_detail(b) // &
           ', mass = ' // str(b%mass, 4) // ', sqrt(E/rho) = ' // str(c, 4) // ', damping alpha = ' // &
           str(merge(s%damping, scene%time%damping, s%damping >= 0.0_wp), 4))
       end associate
@@ -106,11 +109,29 @@ contains
     call log_raw('time    t_end = ' // str(plan%t_end, 6) // ', stable dt = ' // str(plan%dt_stable, 6) // &
       ', dt = ' // str(plan%dt, 6) // ' (' // str(100.0_wp*plan%dt/plan%dt_stable, 3) // ' % of stable), ' // &
       str(plan%nsteps) // ' steps')
+    if (model%has_finite) call log_raw('time    finite strain: the step follows the deforming mesh ' // &
+      '(current length and wave speed, at most the dt above); the step count is an estimate')
     per_step = measure_step_seconds(model, plan)
     call log_raw('cost    about ' // str(1.0e9_wp*per_step/real(max(1, model%nelem), wp), 3) // &
       ' ns per element per step measured here; estimated run time ' // &
       str(per_step*real(plan%nsteps, wp), 3) // ' s (without output)')
   end subroutine report_plan
+
+  !> ' (Q4 mean_dilatation)' and the like for a finite-strain body's blocks.
+  function finite_detail(b) result(s)
+    use raccord_model, only: body_t
+    type(body_t), intent(in) :: b
+    character(len=:), allocatable :: s
+    integer :: k
+    s = ''
+    if (b%blocks(1)%kinematics /= KIN_FINITE) return
+    s = ' ('
+    do k = 1, size(b%blocks)
+      if (k > 1) s = s // ', '
+      s = s // element_name(b%blocks(k)%etype) // ' ' // volumetric_name(b%blocks(k)%volumetric)
+    end do
+    s = s // ')'
+  end function finite_detail
 
   function block_types(b) result(s)
     use raccord_model, only: body_t

@@ -314,12 +314,14 @@ contains
     end do
   end subroutine measure_overlap
 
-  !> Velocity step h of (CD-1): dt, or dt/2 on the first half step. A force
+  !> Velocity step h of (CD-1): dt, or dt/2 on the first half step
+  !> ((dt(n-1/2) + dt(n+1/2))/2 with a variable step). A force
   !> f_c at t(n) then moves v(n+1/2) by h M^-1 f_c / (1 + alpha h/2) (the
   !> semi-implicit damping) and u(n+1) by dt times that.
   pure real(wp) function velocity_step(state) result(h)
     type(state_t), intent(in) :: state
     h = state%dt
+    if (state%adaptive) h = 0.5_wp*(state%dt_prev + state%dt)   ! variable step: dt_n
     if (state%step == 0) h = 0.5_wp*state%dt
   end function velocity_step
 

@@ -54,14 +54,18 @@ module raccord_elastic_block
   use raccord_quadrature, only: gauss_legendre
   use raccord_shape, only: shape_quad, node_natural_coords
   use raccord_colouring, only: colour_chunks
+  use raccord_material, only: moduli_t, make_moduli, KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, &
+    VOL_FULL, material_name
+  use raccord_finite_kernel, only: kernel_finite, fin_chunk_len
   implicit none
   private
 
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
+  public :: make_finite, block_chunks, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
-  integer, parameter :: chunk_len = 32
+  integer, parameter :: chunk_len = fin_chunk_len
   !> Blocks with fewer chunks run on the calling thread only (the same
   !> colour order, so the same bits): a parallel region and the barrier
   !> after each colour cost a few microseconds, the work of 1024 Q4
@@ -70,6 +74,9 @@ module raccord_elastic_block
   !> Chunks per colouring group: nchunk/group_divisor, within 1..max_group.
   integer, parameter :: max_group = 32, group_divisor = 64
   integer, parameter :: max_nen = 8, max_gp = 9
+  !> The kernel of a block, chosen once (make_finite, init_elastic_block):
+  !> small-strain Q4 split, small-strain Q8, finite strain (Q4 or Q8).
+  integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE = 3
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
   !> M11, M12, M22 (eq. 6.5).
@@ -93,6 +100,13 @@ module raccord_elastic_block
     integer, allocatable :: conn(:,:)    !< (nen, nel) global node indices
     real(wp) :: young = 0.0_wp, poisson = 0.0_wp, thickness = 1.0_wp
     logical :: plane_stress = .false.
+    !> kinematics (KIN_SMALL, KIN_FINITE), material (MAT_*) and volumetric
+    !> treatment (VOL_FULL, VOL_MEAN) of the block's body (raccord_material)
+    integer :: kinematics = KIN_SMALL, material = MAT_LINEAR, volumetric = VOL_FULL
+    type(moduli_t) :: moduli
+    real(wp) :: density = 0.0_wp         !< reference density rho0 (finite strain: wave speed)
+    integer, private :: kernel = 0
+    integer, allocatable :: ids(:)       !< mesh element ids (messages), set by the model builder
     !> threads of the element loops (1: serial); set_model_threads sets it
     !> from OMP_NUM_THREADS for a model's blocks
     integer :: nthreads = 1
@@ -117,7 +131,19 @@ module raccord_elastic_block
     ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
+    ! Finite strain only (Q4 and Q8; h above holds H = sqrt(c) J0^-1 for both)
+    real(wp), allocatable, private :: sc(:,:,:)      !< (chunk_len, ngp, nchunk) sqrt(c)
+    real(wp), allocatable, private :: vol0(:,:)      !< (chunk_len, nchunk) reference volume V_e
+    real(wp), allocatable, private :: diag(:,:,:)    !< (chunk_len, 4, nchunk) X3 - X1, X4 - X2
   end type elastic_block_t
+
+  !> What the finite-strain kernel reports per chunk each step (the caller
+  !> owns it, one per block, and reads it after the forces):
+  !> stored energy, smallest J and its element, largest omega^2 estimate.
+  type, public :: block_watch_t
+    real(wp), allocatable :: energy(:), jmin(:), w2(:)
+    integer, allocatable :: jmin_el(:)
+  end type block_watch_t
 
   !> Element-level work: raccord_elastic_block_element.f90 (a submodule).
   !> q4_detj and add_element_stress, private, are called from this module
@@ -163,6 +189,22 @@ module raccord_elastic_block
       real(wp), intent(in) :: u(:,:)
       real(wp), intent(inout) :: s(:,:), wsum(:)
     end subroutine add_element_stress
+    !> The nodal Cauchy stress (strain = .false.) or logarithmic strain
+    !> contributions of finite-strain element e.
+    pure module subroutine add_element_finite(blk, e, u, strain, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(in) :: u(:,:)
+      logical, intent(in) :: strain
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_element_finite
+    !> The nodal small-strain contributions of small-strain element e.
+    pure module subroutine add_element_small_strain(blk, e, u, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(in) :: u(:,:)
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_element_small_strain
   end interface
 
 contains
@@ -181,8 +223,8 @@ contains
     logical, intent(in) :: plane_stress
     type(error_t), intent(inout) :: err
     character(len=*), parameter :: where = 'init_elastic_block: '
-    integer :: nen, n1, ngp, i, j, g, a, e, ic, il, stat
-    real(wp) :: gx(3), gw(3), jac(2, 2), detj, cg, sq, xe(2, max_nen), nat(2), lag(3, 2)
+    integer :: nen, n1, ngp, i, j, g, a, stat
+    real(wp) :: gx(3), gw(3), nat(2), lag(3, 2)
     character(len=256) :: msg
 
     nen = nodes_per_element(etype)
@@ -291,26 +333,49 @@ contains
     end do
 
     if (etype == ELEM_Q4) then
+      blk%kernel = KERN_Q4
       call init_q4_data(blk, x, err)
-      return
+    else
+      blk%kernel = KERN_Q8
+      call init_gauss_maps(blk, x, err)
     end if
+  end subroutine init_elastic_block
 
+  !> H = sqrt(c) J^-1 and c = w detJ thickness at every Gauss point (theory
+  !> eq. 6.1), for the Q8 kernel and every finite-strain kernel. Fails
+  !> (EXIT_INPUT) on detJ <= 0, naming the element.
+  subroutine init_gauss_maps(blk, x, err)
+    type(elastic_block_t), intent(inout) :: blk
+    real(wp), intent(in) :: x(:,:)
+    type(error_t), intent(inout) :: err
+    character(len=*), parameter :: where = 'init_elastic_block: '
+    real(wp) :: jac(2, 2), detj, cg, sq, xe(2, max_nen)
+    integer :: e, g, ic, il, stat
+    character(len=256) :: msg
+    if (.not. allocated(blk%h)) then
+      allocate(blk%h(chunk_len, 4, blk%ngp, blk%nchunk), blk%c(blk%ngp, blk%nel), stat=stat, errmsg=msg)
+      if (stat /= 0) then
+        call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
+          ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
+        return
+      end if
+    end if
     blk%h = 0.0_wp
     do e = 1, blk%nel
-      xe(:, 1:nen) = x(:, conn(:, e))
+      xe(:, 1:blk%nen) = x(:, blk%conn(:, e))
       ic = (e - 1)/chunk_len + 1
       il = e - (ic - 1)*chunk_len
-      do g = 1, ngp
+      do g = 1, blk%ngp
         ! J_ik = dx_i/dxi_k (theory eq. 1.4)
-        jac = matmul(xe(:, 1:nen), transpose(blk%dnref(:, :, g)))
+        jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
         detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
         if (.not. (detj > 0.0_wp)) then
-          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(etype) // &
+          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(blk%etype) // &
             ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
             '; its nodes must be counter-clockwise and the element not degenerate')
           return
         end if
-        cg = blk%wts(g)*detj*thickness
+        cg = blk%wts(g)*detj*blk%thickness
         blk%c(g, e) = cg
         sq = sqrt(cg)/detj
         ! H = sqrt(c) J^-1, stored column-major (H11, H21, H12, H22)
@@ -320,7 +385,135 @@ contains
         blk%h(il, 4, g, ic) = sq*jac(1, 1)
       end do
     end do
-  end subroutine init_elastic_block
+  end subroutine init_gauss_maps
+
+  !> Turn a block set up by init_elastic_block into a finite-strain block
+  !> (total Lagrangian, doc/theory-finite.md) of the given material
+  !> (MAT_NEO_HOOKE or MAT_SVK) and volumetric treatment (VOL_FULL or
+  !> VOL_MEAN), reference density rho0. Plane strain only: plane stress is
+  !> refused (EXIT_INPUT). The small-strain data stay: they give the initial
+  !> stable step (at F = I both laws have Hooke's tangent).
+  subroutine make_finite(blk, x, material, volumetric, density, err)
+    type(elastic_block_t), intent(inout) :: blk
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: material, volumetric
+    real(wp), intent(in) :: density
+    type(error_t), intent(inout) :: err
+    character(len=*), parameter :: where = 'make_finite: '
+    integer :: e, g, ic, il, stat
+    character(len=256) :: msg
+    real(wp) :: x1(2), x2(2), x3(2), x4(2)
+    if (blk%plane_stress) then
+      call raise_error(err, EXIT_INPUT, where // 'finite strain is built for plane strain only; ' // &
+        'use hypothesis = ''plane_strain'' or kinematics = ''small''')
+      return
+    end if
+    if (material /= MAT_NEO_HOOKE .and. material /= MAT_SVK) then
+      call raise_error(err, EXIT_INPUT, where // 'material ''' // material_name(material) // &
+        ''' has no finite-strain law; use ''neo_hooke'' or ''svk''')
+      return
+    end if
+    if (.not. (density > 0.0_wp)) then
+      call raise_error(err, EXIT_INPUT, where // 'the density must be > 0, got ' // str(density))
+      return
+    end if
+    blk%kinematics = KIN_FINITE
+    blk%material = material
+    blk%volumetric = volumetric
+    blk%density = density
+    blk%moduli = make_moduli(blk%young, blk%poisson)
+    blk%kernel = KERN_FINITE
+    if (.not. allocated(blk%h)) call init_gauss_maps(blk, x, err)
+    if (err%failed()) return
+    allocate(blk%sc(chunk_len, blk%ngp, blk%nchunk), blk%vol0(chunk_len, blk%nchunk), &
+      blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
+    if (stat /= 0) then
+      call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
+        ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
+      return
+    end if
+    ! padding lanes of the last chunk: a unit element, never scattered
+    blk%sc = 1.0_wp
+    blk%vol0 = 1.0_wp
+    blk%diag = 1.0_wp
+    do e = 1, blk%nel
+      ic = (e - 1)/chunk_len + 1
+      il = e - (ic - 1)*chunk_len
+      do g = 1, blk%ngp
+        blk%sc(il, g, ic) = sqrt(blk%c(g, e))
+      end do
+      blk%vol0(il, ic) = sum(blk%c(:, e))
+      ! corner diagonals (corners are the element's first four nodes)
+      x1 = x(:, blk%conn(1, e))
+      x2 = x(:, blk%conn(2, e))
+      x3 = x(:, blk%conn(3, e))
+      x4 = x(:, blk%conn(4, e))
+      blk%diag(il, 1:2, ic) = x3 - x1
+      blk%diag(il, 3:4, ic) = x4 - x2
+    end do
+  end subroutine make_finite
+
+  !> Number of chunks of the block (the length of its watch arrays).
+  pure integer function block_chunks(blk)
+    type(elastic_block_t), intent(in) :: blk
+    block_chunks = blk%nchunk
+  end function block_chunks
+
+  !> Allocate a block's watch (one entry per chunk).
+  subroutine init_watch(blk, watch)
+    type(elastic_block_t), intent(in) :: blk
+    type(block_watch_t), intent(out) :: watch
+    allocate(watch%energy(blk%nchunk), watch%jmin(blk%nchunk), watch%w2(blk%nchunk), source=0.0_wp)
+    allocate(watch%jmin_el(blk%nchunk), source=0)
+    watch%jmin = 1.0_wp
+  end subroutine init_watch
+
+  !> The finite-strain block's omega^2 estimate on its undeformed mesh
+  !> (the kernel's current-length estimate at u = 0), for the plan's step.
+  function finite_w2_at_rest(blk, nnode) result(w2)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: nnode
+    real(wp) :: w2
+    real(wp), allocatable :: u(:,:), f(:,:)
+    type(block_watch_t) :: watch
+    allocate(u(2, nnode), f(2, nnode), source=0.0_wp)
+    call init_watch(blk, watch)
+    call add_internal_force(blk, u, f, watch=watch, monitor=.true.)
+    w2 = watch_w2(watch)
+  end function finite_w2_at_rest
+
+  !> Stored energy of the block at the last forces, summed in chunk order.
+  pure real(wp) function watch_energy(watch) result(w)
+    type(block_watch_t), intent(in) :: watch
+    integer :: k
+    w = 0.0_wp
+    do k = 1, size(watch%energy)
+      w = w + watch%energy(k)
+    end do
+  end function watch_energy
+
+  !> Largest omega^2 estimate of the block at the last monitored forces.
+  pure real(wp) function watch_w2(watch) result(w2)
+    type(block_watch_t), intent(in) :: watch
+    w2 = maxval(watch%w2)
+  end function watch_w2
+
+  !> The block's first inverted element (J <= 0 at a Gauss point) at the
+  !> last forces, 0 if none; jmin its smallest J.
+  pure subroutine watch_inverted(watch, e, jmin)
+    type(block_watch_t), intent(in) :: watch
+    integer, intent(out) :: e
+    real(wp), intent(out) :: jmin
+    integer :: k
+    e = 0
+    jmin = minval(watch%jmin)
+    do k = 1, size(watch%jmin)
+      if (watch%jmin(k) <= 0.0_wp) then
+        e = (k - 1)*chunk_len + watch%jmin_el(k)
+        return
+      end if
+    end do
+  end subroutine watch_inverted
 
   !> Q4 data of every element: map coefficients (cold) and the kernel's
   !> beta, gamma, M (hot), theory eqs. 6.2-6.5. Fails (EXIT_INPUT) on
@@ -457,20 +650,30 @@ contains
   !> first sets the nodes it claimed (claim_first_touch) to zero, so that
   !> over the blocks claimed together f = K u without zeroing f beforehand
   !> (nodes no block claims are left as they are).
-  subroutine add_internal_force(blk, u, f, fresh)
+  subroutine add_internal_force(blk, u, f, fresh, watch, monitor)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: f(:,:)
     logical, intent(in), optional :: fresh
-    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen)
-    integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j
-    logical :: reset
+    !> finite strain: per-chunk energy, smallest J and (with monitor) omega^2
+    type(block_watch_t), intent(inout), optional :: watch
+    logical, intent(in), optional :: monitor
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), lfac, rinv, en, jm, w2
+    integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
+    logical :: reset, mon, watched
     nen = blk%nen
     reset = .false.
     if (present(fresh)) reset = fresh
+    mon = .false.
+    if (present(monitor)) mon = monitor
+    watched = present(watch)
+    lfac = 1.0_wp
+    if (blk%etype == ELEM_Q8) lfac = 0.3_wp
+    rinv = 0.0_wp
+    if (blk%density > 0.0_wp) rinv = 1.0_wp/blk%density
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset) &
-    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j)
+    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, lfac, rinv) &
+    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
@@ -491,11 +694,23 @@ contains
               ue(i, 2, a) = u(2, node)
             end do
           end do
-          if (blk%etype == ELEM_Q4) then
+          ! the block's kernel, chosen once when the model was built
+          select case (blk%kernel)
+          case (KERN_Q4)
             call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
-          else
+          case (KERN_Q8)
             call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
-          end if
+          case (KERN_FINITE)
+            call kernel_finite(nc, nen, blk%ngp, blk%material, blk%volumetric, blk%moduli, blk%dnref, &
+              blk%h(:, :, :, ic), blk%sc(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), lfac, rinv, &
+              blk%thickness, mon, ue, fe, en, jm, jel, w2)
+            if (watched) then
+              watch%energy(ic) = en
+              watch%jmin(ic) = jm
+              watch%jmin_el(ic) = jel
+              if (mon) watch%w2(ic) = w2
+            end if
+          end select
           do a = 1, nen
             do i = 1, nc
               node = blk%conn(a, e0 + i)
@@ -628,21 +843,44 @@ contains
   !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
   !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
   !> colour order (the same bits for any thread count).
-  subroutine add_nodal_stress(blk, u, s, wsum)
+  subroutine add_nodal_stress(blk, u, s, wsum, strain)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: s(:,:), wsum(:)
-    integer :: col, k, e, e0, e1
+    !> the strain instead (small strain, or logarithmic in finite strain)
+    logical, intent(in), optional :: strain
+    integer :: col, k, e, e0, e1, what
+    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4
+    what = small_stress
+    if (present(strain)) then
+      if (strain) what = small_strain
+    end if
+    if (blk%kinematics == KIN_FINITE) what = what + 2
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, s, wsum) &
+    !$omp   default(none) shared(blk, u, s, wsum, what) &
     !$omp   private(col, k, e, e0, e1)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
         call group_elements(blk, blk%colour_group(k), e0, e1)
-        do e = e0, e1
-          call add_element_stress(blk, e, u, s, wsum)
-        end do
+        select case (what)
+        case (small_stress)
+          do e = e0, e1
+            call add_element_stress(blk, e, u, s, wsum)
+          end do
+        case (small_strain)
+          do e = e0, e1
+            call add_element_small_strain(blk, e, u, s, wsum)
+          end do
+        case (finite_stress)
+          do e = e0, e1
+            call add_element_finite(blk, e, u, .false., s, wsum)
+          end do
+        case (finite_strain)
+          do e = e0, e1
+            call add_element_finite(blk, e, u, .true., s, wsum)
+          end do
+        end select
       end do groups
       !$omp end do
     end do colours

@@ -7,6 +7,8 @@
 !> The procedures the parent declares (its interface block gives their
 !> arguments) are defined here with `module procedure`.
 submodule (raccord_elastic_block) raccord_elastic_block_element
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use raccord_material, only: VOL_MEAN, neo_hooke_tau, neo_hooke_iso_tau, svk_tau, cauchy_from_tau, log_strain
   implicit none
 
   interface
@@ -215,4 +217,79 @@ contains
       wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
     end do
   end procedure add_element_stress
+
+  !> The nodal contributions of finite-strain element e (add_nodal_stress):
+  !> Cauchy stress sigma = tau/J (M-2, M-3) at each Gauss point, with the
+  !> element's mean-dilatation pressure when the block uses it; with
+  !> strain, the logarithmic strain ln(B)/2 instead.
+  module procedure add_element_finite
+    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), rs, f(4, max_gp), detf(max_gp)
+    real(wp) :: tau(4), tau33, jbar, vsum, cg, p
+    integer :: g, a, nen
+    nen = blk%nen
+    ue(:, 1:nen) = u(:, blk%conn(:, e))
+    jbar = 0.0_wp
+    vsum = 0.0_wp
+    do g = 1, blk%ngp
+      call scaled_gradients(blk, e, g, gr)
+      cg = gauss_c(blk, e, g)
+      rs = 1.0_wp/sqrt(cg)
+      ! grad_X u (F-1)
+      gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
+      f(:, g) = [1.0_wp + gu(1, 1), gu(2, 1), gu(1, 2), 1.0_wp + gu(2, 2)]
+      detf(g) = f(1, g)*f(4, g) - f(2, g)*f(3, g)
+      jbar = jbar + detf(g)*cg
+      vsum = vsum + cg
+    end do
+    jbar = jbar/vsum
+    do g = 1, blk%ngp
+      if (strain) then
+        sg(:, g) = log_strain(f(:, g))
+        cycle
+      end if
+      if (.not. (detf(g) > 0.0_wp)) then
+        sg(:, g) = ieee_value(1.0_wp, ieee_quiet_nan)
+        cycle
+      end if
+      if (blk%material == MAT_SVK) then
+        call svk_tau(blk%moduli, f(:, g), tau, tau33)
+      else if (blk%volumetric == VOL_MEAN) then
+        call neo_hooke_iso_tau(blk%moduli, f(:, g), detf(g), tau, tau33)
+        p = blk%moduli%k*(jbar - 1.0_wp)*detf(g)
+        tau(1) = tau(1) + p
+        tau(4) = tau(4) + p
+        tau33 = tau33 + p
+      else
+        call neo_hooke_tau(blk%moduli, f(:, g), detf(g), tau, tau33)
+      end if
+      sg(:, g) = cauchy_from_tau(detf(g), tau, tau33)
+    end do
+    do a = 1, nen
+      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
+      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
+    end do
+  end procedure add_element_finite
+
+  !> The nodal small strain (exx, eyy, exy, ezz) of small-strain element e;
+  !> ezz = -nu/(1-nu) (exx + eyy) in plane stress, 0 in plane strain.
+  module procedure add_element_small_strain
+    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), rs
+    integer :: g, a, nen
+    nen = blk%nen
+    ue(:, 1:nen) = u(:, blk%conn(:, e))
+    do g = 1, blk%ngp
+      call scaled_gradients(blk, e, g, gr)
+      rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
+      gu = matmul(ue(:, 1:nen), transpose(gr(:, 1:nen)))*rs
+      sg(1, g) = gu(1, 1)
+      sg(2, g) = gu(2, 2)
+      sg(3, g) = 0.5_wp*(gu(1, 2) + gu(2, 1))
+      sg(4, g) = 0.0_wp
+      if (blk%plane_stress) sg(4, g) = -blk%poisson/(1.0_wp - blk%poisson)*(gu(1, 1) + gu(2, 2))
+    end do
+    do a = 1, nen
+      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
+      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
+    end do
+  end procedure add_element_small_strain
 end submodule raccord_elastic_block_element

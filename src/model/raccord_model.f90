@@ -70,6 +70,7 @@ module raccord_model
     real(wp), allocatable :: v0(:,:)                   !< (2, nnode) initial velocity
     real(wp), allocatable :: alpha(:)                  !< (nnode) mass-proportional damping [1/time], per body
     real(wp) :: w2_bound = 0.0_wp                      !< max over bodies of the element bound
+    real(wp) :: w2_small = 0.0_wp                      !< the same over the small-strain bodies only
     !> Threads of the per-node loops (1: serial); set_model_threads sets it
     !> with the blocks' count.
     integer :: nthreads = 1
@@ -78,6 +79,10 @@ module raccord_model
     logical :: has_loads = .false.
     logical :: has_damping = .false.
     logical :: has_supports = .false.
+    !> Some body is finite strain: its stored energy enters the energy
+    !> account and the stable step follows its deformation (variable step).
+    logical :: has_finite = .false.
+    integer, allocatable :: finite_nodes(:)            !< nodes of finite-strain bodies
   end type model_t
 
 contains

@@ -8,7 +8,9 @@ module raccord_model_build
   use raccord_mesh, only: mesh_t, nodes_per_element, element_name, find_node_set, find_elem_set, &
     find_surface, ELEM_Q4, ELEM_Q8
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
-  use raccord_elastic_block, only: init_elastic_block, claim_first_touch, add_lumped_mass, add_body_force, max_eigenvalue_bound
+  use raccord_elastic_block, only: init_elastic_block, claim_first_touch, add_lumped_mass, add_body_force, max_eigenvalue_bound, &
+    make_finite, finite_w2_at_rest
+  use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE, VOL_AUTO, VOL_FULL, VOL_MEAN
   use raccord_edge_load, only: add_edge_traction
   use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t, requested_threads, set_model_threads
   implicit none
@@ -81,7 +83,7 @@ contains
     type(model_t), intent(inout) :: model
     integer, allocatable, intent(out) :: elem_body(:)
     type(error_t), intent(inout) :: err
-    integer :: ib, ks, e, k, nb, nen, nblk, et, i, nfree
+    integer :: ib, ks, e, k, nb, nen, nblk, et, i, nfree, vol
     integer, allocatable :: elems(:), conn(:,:)
     integer :: types(2)
     real(wp) :: m_before
@@ -142,10 +144,27 @@ contains
             call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
             return
           end if
+          if (spec%kinematics == KIN_FINITE) then
+            ! The body's kernel: finite strain, its material, and for
+            ! neo-Hooke Q4 mean dilatation unless the deck says otherwise.
+            vol = spec%volumetric
+            if (vol == VOL_AUTO) vol = merge(VOL_MEAN, VOL_FULL, spec%material == MAT_NEO_HOOKE .and. et == ELEM_Q4)
+            call make_finite(body%blocks(nblk), mesh%x, spec%material, vol, spec%density, err)
+            if (err%failed()) then
+              call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
+              return
+            end if
+            model%has_finite = .true.
+          end if
+          body%blocks(nblk)%ids = mesh%elem_id(pack(elems, mesh%etype(elems) == et))
           m_before = sum(model%mass)
           call add_lumped_mass(body%blocks(nblk), spec%density, model%mass)
           body%mass = body%mass + (sum(model%mass) - m_before)
           body%w2_bound = max(body%w2_bound, max_eigenvalue_bound(body%blocks(nblk), spec%density))
+          ! finite strain: the step follows the current-length estimate,
+          ! a little below the exact element bound (method brief 5.1)
+          if (spec%kinematics == KIN_FINITE) &
+            body%w2_bound = max(body%w2_bound, finite_w2_at_rest(body%blocks(nblk), mesh%nnode))
           if (any(spec%body_force /= 0.0_wp)) then
             call add_body_force(body%blocks(nblk), spec%body_force, model%f_body)
             model%has_body_force = .true.
@@ -160,6 +179,7 @@ contains
         end do
         model%nelem = model%nelem + size(elems)
         model%w2_bound = max(model%w2_bound, body%w2_bound)
+        if (spec%kinematics /= KIN_FINITE) model%w2_small = max(model%w2_small, body%w2_bound)
       end associate
     end do
 
@@ -167,6 +187,17 @@ contains
     if (nfree > 0) call log_warn('build_model', str(nfree) // ' mesh elements belong to no &body and are ignored')
     allocate(model%minv(mesh%nnode), source=0.0_wp)
     where (model%mass > 0.0_wp) model%minv = 1.0_wp/model%mass
+    ! Nodes of finite-strain bodies: their stored energy replaces 1/2 u' f_int
+    ! in the energy account (raccord_central_difference).
+    block
+      logical, allocatable :: fin(:)
+      allocate(fin(mesh%nnode), source=.false.)
+      do ib = 1, size(model%bodies)
+        if (scene%bodies(ib)%kinematics /= KIN_FINITE) cycle
+        fin = fin .or. model%node_body == ib
+      end do
+      model%finite_nodes = pack([(i, i = 1, mesh%nnode)], fin)
+    end block
   end subroutine build_bodies
 
   !> Supports and surface loads from the &boundary groups.

@@ -16,6 +16,7 @@ module raccord_deck
   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, ieee_set_halting_mode, &
     ieee_set_flag, ieee_support_halting
   use raccord_kinds, only: wp, name_len, path_len
+  use raccord_material, only: KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, VOL_AUTO, VOL_FULL, VOL_MEAN
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str, lower
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
@@ -40,7 +41,8 @@ module raccord_deck
   !> Keys of each group, in the order the documentation and the echo use.
   character(len=*), parameter :: MESH_KEYS(*) = [character(len=16) :: 'file', 'format', 'scale']
   character(len=*), parameter :: BODY_KEYS(*) = [character(len=16) :: 'name', 'elset', 'young', 'poisson', &
-    'density', 'hypothesis', 'thickness', 'velocity', 'body_force', 'damping']
+    'density', 'hypothesis', 'thickness', 'velocity', 'body_force', 'damping', 'kinematics', 'material', &
+    'volumetric']
   character(len=*), parameter :: BC_KEYS(*) = [character(len=16) :: 'set', 'type', 'components', 'value', &
     'pressure', 'amplitude']
   character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
@@ -281,9 +283,10 @@ contains
     type(deck_block_t), intent(in) :: blk
     type(body_spec_t), intent(out) :: spec
     type(error_t), intent(inout) :: err
-    character(len=name_len) :: name, elset, hypothesis
+    character(len=name_len) :: name, elset, hypothesis, kinematics, material, volumetric
     real(wp) :: young, poisson, density, thickness, velocity(2), body_force(2), damping
-    namelist /body/ name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force, damping
+    namelist /body/ name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force, damping, &
+      kinematics, material, volumetric
     character(len=:), allocatable :: record, label
     character(len=256) :: msg
     integer :: k, ios
@@ -294,6 +297,9 @@ contains
     poisson = UNSET
     density = UNSET
     hypothesis = 'plane_strain'
+    kinematics = 'small'
+    material = 'linear_elastic'
+    volumetric = 'auto'
     thickness = spec%thickness
     velocity = spec%velocity
     body_force = spec%body_force
@@ -361,6 +367,8 @@ contains
         'use ''plane_strain'' or ''plane_stress''', err)
       return
     end select
+    call read_constitution(deck, blk, label, lower(kinematics), lower(material), lower(volumetric), spec, err)
+    if (err%failed()) return
 
     spec%name = trim(name)
     ! The element set defaults to the body's name (one physical group per body).
@@ -377,6 +385,70 @@ contains
     spec%body_force = body_force
     spec%damping = damping
   end subroutine read_body
+
+  !> &body kinematics, material and volumetric: the body's kernel (element
+  !> x hypothesis x kinematics x material, doc/theory-finite.md). Small
+  !> strain goes with linear_elastic, finite strain with neo_hooke or svk;
+  !> other pairs are refused with what to write instead.
+  subroutine read_constitution(deck, blk, label, kinematics, material, volumetric, spec, err)
+    character(len=*), intent(in) :: deck, label, kinematics, material, volumetric
+    type(deck_block_t), intent(in) :: blk
+    type(body_spec_t), intent(inout) :: spec
+    type(error_t), intent(inout) :: err
+    select case (kinematics)
+    case ('small')
+      spec%kinematics = KIN_SMALL
+    case ('finite')
+      spec%kinematics = KIN_FINITE
+    case default
+      call bad_value(deck, blk, label, 'kinematics', 'unknown kinematics ''' // trim(kinematics) // '''', &
+        'use ''small'' (small strain, the default) or ''finite'' (large strain and rotation)', err)
+      return
+    end select
+    select case (material)
+    case ('linear_elastic')
+      spec%material = MAT_LINEAR
+    case ('neo_hooke')
+      spec%material = MAT_NEO_HOOKE
+    case ('svk')
+      spec%material = MAT_SVK
+    case default
+      call bad_value(deck, blk, label, 'material', 'unknown material ''' // trim(material) // '''', &
+        'use ''linear_elastic'' (small strain), ''neo_hooke'' or ''svk'' (finite strain)', err)
+      return
+    end select
+    select case (volumetric)
+    case ('auto')
+      spec%volumetric = VOL_AUTO
+    case ('full')
+      spec%volumetric = VOL_FULL
+    case ('mean_dilatation')
+      spec%volumetric = VOL_MEAN
+    case default
+      call bad_value(deck, blk, label, 'volumetric', 'unknown volumetric treatment ''' // trim(volumetric) // '''', &
+        'use ''auto'' (mean dilatation for neo_hooke Q4, full integration otherwise), ''full'' or ' // &
+        '''mean_dilatation''', err)
+      return
+    end select
+    if (spec%kinematics == KIN_FINITE .and. spec%material == MAT_LINEAR) then
+      call bad_value(deck, blk, label, 'kinematics', 'finite strain needs a hyperelastic material, ' // &
+        'and material is ''linear_elastic''', 'write material = ''neo_hooke'' (or ''svk'') beside ' // &
+        'kinematics = ''finite'', or kinematics = ''small'' for Hooke''s law', err)
+    else if (spec%kinematics == KIN_SMALL .and. spec%material /= MAT_LINEAR) then
+      call bad_value(deck, blk, label, 'material', 'material ''' // trim(material) // ''' is a finite-strain law ' // &
+        'and kinematics is ''small''', 'write kinematics = ''finite'' beside material = ''' // trim(material) // &
+        ''', or material = ''linear_elastic'' for small strain', err)
+    else if (spec%kinematics == KIN_FINITE .and. spec%plane_stress) then
+      call bad_value(deck, blk, label, 'hypothesis', 'finite strain is built for plane strain only', &
+        'write hypothesis = ''plane_strain'', or kinematics = ''small'' for a plane-stress body', err)
+    else if (spec%kinematics == KIN_SMALL .and. spec%volumetric /= VOL_AUTO) then
+      call bad_value(deck, blk, label, 'volumetric', 'the volumetric treatment is a finite-strain option', &
+        'leave volumetric out for a small-strain body', err)
+    else if (spec%material == MAT_SVK .and. spec%volumetric == VOL_MEAN) then
+      call bad_value(deck, blk, label, 'volumetric', 'mean dilatation is built for neo_hooke only', &
+        'write volumetric = ''full'' (or leave it out) for an svk body', err)
+    end if
+  end subroutine read_constitution
 
   !> &boundary set, type, components, value, pressure, amplitude.
   subroutine read_boundary(deck, blk, spec, err)

@@ -9,6 +9,7 @@ module raccord_deck_write
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_IO
   use raccord_strings, only: str
+  use raccord_material, only: KIN_FINITE, kinematics_name, material_name, volumetric_name
   use raccord_scene, only: scene_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE, &
     METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0, MULT_DUAL
   implicit none
@@ -63,6 +64,9 @@ contains
           else
             call put_text(unit, 'hypothesis', 'plane_strain', ios, msg)
           end if
+          call put_text(unit, 'kinematics', kinematics_name(b%kinematics), ios, msg)
+          call put_text(unit, 'material', material_name(b%material), ios, msg)
+          if (b%kinematics == KIN_FINITE) call put_text(unit, 'volumetric', volumetric_name(b%volumetric), ios, msg)
           call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
           call put(unit, '  velocity = ' // reals_text(b%velocity), ios, msg)
           call put(unit, '  body_force = ' // reals_text(b%body_force), ios, msg)

@@ -9,6 +9,7 @@
 !> MPa and t/mm^3 (tonne per cubic millimetre), so that N = t mm / s^2.
 module raccord_scene
   use raccord_kinds, only: wp, name_len, path_len
+  use raccord_material, only: KIN_SMALL, MAT_LINEAR, VOL_AUTO
   implicit none
   private
 
@@ -38,6 +39,9 @@ module raccord_scene
     real(wp) :: poisson = 0.0_wp                    !< nu [-]
     real(wp) :: density = 0.0_wp                    !< rho [mass/length^3]
     logical :: plane_stress = .false.               !< hypothesis = 'plane_stress' (default plane strain)
+    integer :: kinematics = KIN_SMALL               !< kinematics = 'small' | 'finite' (raccord_material)
+    integer :: material = MAT_LINEAR                !< material = 'linear_elastic' | 'neo_hooke' | 'svk'
+    integer :: volumetric = VOL_AUTO                !< volumetric = 'auto' | 'full' | 'mean_dilatation'
     real(wp) :: thickness = 1.0_wp                  !< out-of-plane thickness [length]
     real(wp) :: velocity(2) = 0.0_wp                !< initial velocity [length/time]
     real(wp) :: body_force(2) = 0.0_wp              !< force per unit volume [force/length^3]

@@ -25,7 +25,8 @@ module raccord_central_difference
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t, amplitude_at
   use raccord_state, only: state_t
-  use raccord_elastic_block, only: add_internal_force
+  use raccord_elastic_block, only: add_internal_force, watch_energy
+  use raccord_material, only: KIN_FINITE
   implicit none
   private
 
@@ -64,7 +65,13 @@ contains
 
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
-        call add_internal_force(model%bodies(ib)%blocks(k), state%u, state%f_int, fresh=.true.)
+        if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) then
+          ! finite strain: also its stored energy, smallest J and stable-step estimate
+          call add_internal_force(model%bodies(ib)%blocks(k), state%u, state%f_int, fresh=.true., &
+            watch=state%watch(k, ib), monitor=.true.)
+        else
+          call add_internal_force(model%bodies(ib)%blocks(k), state%u, state%f_int, fresh=.true.)
+        end if
       end do
     end do
 
@@ -104,6 +111,9 @@ contains
     dt = state%dt
     first = state%step == 0
     h = dt
+    ! variable step (method brief 5.3): v(n+1/2) = v(n-1/2) + dt_n a(n),
+    ! dt_n = (dt(n-1/2) + dt(n+1/2))/2
+    if (state%adaptive) h = 0.5_wp*(state%dt_prev + dt)
     if (first) h = 0.5_wp*dt
     part = 0.0_wp
     dpart = 0.0_wp
@@ -145,6 +155,7 @@ contains
       ! the nodes it moves.
       state%energy%discrete = 0.5_wp*(kh + cross)
     end associate
+    if (model%has_finite) call finite_energy(model, state)
     if (model%has_damping) then
       ! Dissipation of the semi-implicit damping term over the step:
       ! alpha h v' M v with v the mean of the two half-step velocities
@@ -244,6 +255,32 @@ contains
       state%u_next(comp, i) = target
     end do
   end subroutine predict_constrained
+
+  !> Finite-strain bodies (doc/theory-finite.md, "Energy"): their stored
+  !> energy W(u(n)) = sum_g W(F) c replaces 1/2 u(n)' f_int(n), and (E-1)
+  !> becomes H(n+1/2) = 1/2 v' M v + W(u(n)) + 1/2 f_int(n)' (u(n+1) - u(n)),
+  !> which is (E-1) itself for a linear body. Its change over a step is the
+  !> work of the forces up to the trapezoidal error of integrating W along
+  !> the path: O(dt^2) over a run, not round-off.
+  subroutine finite_energy(model, state)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    real(wp) :: w, ie
+    integer :: ib, k, j, i
+    w = 0.0_wp
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) w = w + watch_energy(state%watch(k, ib))
+      end do
+    end do
+    ie = 0.0_wp
+    do j = 1, size(model%finite_nodes)
+      i = model%finite_nodes(j)
+      ie = ie + state%u(1, i)*state%f_int(1, i) + state%u(2, i)*state%f_int(2, i)
+    end do
+    state%energy%internal = state%energy%internal + (w - 0.5_wp*ie)
+    state%energy%discrete = state%energy%discrete + (w - 0.5_wp*ie)
+  end subroutine finite_energy
 
   !> sum alpha m |v|^2 over the nodes i0..i1, v the mean of the two
   !> half-step velocities (on the first half step, of v(0) and v(1/2)).
@@ -347,6 +384,11 @@ contains
     call move_alloc(state%u_next, state%u)
     call move_alloc(spare, state%u_next)
     state%step = state%step + 1_i8
-    state%time = real(state%step, wp)*state%dt
+    if (state%adaptive) then
+      state%time = state%time + state%dt
+      if (state%step == state%nsteps) state%time = state%t_end
+    else
+      state%time = real(state%step, wp)*state%dt
+    end if
   end subroutine advance_state
 end module raccord_central_difference

@@ -2,6 +2,8 @@
 module raccord_state
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t
+  use raccord_elastic_block, only: block_watch_t, init_watch
+  use raccord_material, only: KIN_FINITE
   implicit none
   private
 
@@ -34,7 +36,11 @@ module raccord_state
     integer(i8) :: step = 0
     integer(i8) :: nsteps = 0
     real(wp) :: time = 0.0_wp
-    real(wp) :: dt = 0.0_wp
+    real(wp) :: dt = 0.0_wp                 !< dt(n+1/2), the step from t(n) to t(n+1)
+    !> Variable step (finite-strain bodies, raccord_time_step): dt(n-1/2),
+    !> the plan's step (the largest allowed), t_end and the safety factor.
+    logical :: adaptive = .false.
+    real(wp) :: dt_prev = 0.0_wp, dt_plan = 0.0_wp, t_end = 0.0_wp, safety = 0.0_wp
     real(wp), allocatable :: u(:,:)         !< u(n)
     real(wp), allocatable :: u_next(:,:)    !< u(n+1), predicted then corrected by contact
     real(wp), allocatable :: u_prev(:,:)    !< u(n-1), for the work increments
@@ -47,6 +53,10 @@ module raccord_state
     real(wp), allocatable :: load_amp(:)    !< amplitude of each surface load at t(n)
     real(wp), allocatable :: support_amp(:) !< amplitude of each driven support at t(n+1) (0 if fixed)
     type(energy_t) :: energy
+    !> (block, body): what each finite-strain block reported at the last
+    !> forces (stored energy, smallest J, omega^2 estimate); unallocated
+    !> arrays for small-strain blocks
+    type(block_watch_t), allocatable :: watch(:,:)
   end type state_t
 
   public :: init_state
@@ -59,7 +69,7 @@ contains
     real(wp), intent(in) :: dt
     integer(i8), intent(in) :: nsteps
     type(state_t), intent(out) :: state
-    integer :: n
+    integer :: n, ib, k
     n = model%nnode
     state%dt = dt
     state%nsteps = nsteps
@@ -70,5 +80,16 @@ contains
     allocate(state%reaction(model%ncdof), state%cdof_vold(model%ncdof), source=0.0_wp)
     allocate(state%load_amp(size(model%loads)), source=0.0_wp)
     allocate(state%support_amp(size(model%supports)), source=0.0_wp)
+    state%dt_prev = dt
+    state%dt_plan = dt
+    state%t_end = real(nsteps, wp)*dt
+    state%adaptive = model%has_finite
+    allocate(state%watch(2, size(model%bodies)))
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) &
+          call init_watch(model%bodies(ib)%blocks(k), state%watch(k, ib))
+      end do
+    end do
   end subroutine init_state
 end module raccord_state

@@ -9,6 +9,10 @@ module raccord_time_step
   use raccord_strings, only: str
   use raccord_model, only: model_t
   use raccord_scene, only: scene_t
+  use raccord_state, only: state_t
+  use raccord_material, only: KIN_FINITE
+  use raccord_elastic_block, only: watch_w2, watch_inverted
+  use raccord_error, only: EXIT_NUMERIC
   implicit none
   private
 
@@ -20,7 +24,7 @@ module raccord_time_step
     real(wp) :: t_end = 0.0_wp
   end type time_plan_t
 
-  public :: choose_time_step
+  public :: choose_time_step, adapt_time_step, check_deformation
 
 contains
 
@@ -59,4 +63,67 @@ contains
       plan%dt = plan%t_end/real(plan%nsteps, wp)
     end if
   end subroutine choose_time_step
+
+  !> Stable step on the deforming mesh (finite-strain bodies; method brief
+  !> 5.1-5.3): after the forces at t(n), the next step is
+  !>   dt(n+1/2) = (t_end - t(n)) / k,  k = ceil((t_end - t(n)) / target),
+  !>   target = min(dt_plan, safety * 2 / omega_max(u(n))),
+  !> omega_max^2 the largest of the small-strain bodies' fixed bound and the
+  !> finite-strain blocks' current estimates 4 c^2 / L^2 (current length and
+  !> wave speed). The run still ends exactly at t_end; nsteps becomes n + k.
+  !> A step that collapses below 1e-6 of the plan's stops the run (exit 3):
+  !> an element is about to invert. Does nothing without finite bodies.
+  subroutine adapt_time_step(model, state, err)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    type(error_t), intent(inout) :: err
+    real(wp) :: w2, target, remaining
+    integer(i8) :: k
+    integer :: ib, kb
+    if (.not. state%adaptive) return
+    if (state%step >= state%nsteps) return
+    w2 = model%w2_small
+    do ib = 1, size(model%bodies)
+      do kb = 1, size(model%bodies(ib)%blocks)
+        if (model%bodies(ib)%blocks(kb)%kinematics == KIN_FINITE) w2 = max(w2, watch_w2(state%watch(kb, ib)))
+      end do
+    end do
+    target = state%dt_plan
+    if (w2 > 0.0_wp) target = min(target, state%safety*2.0_wp/sqrt(w2))
+    if (.not. (target >= 1.0e-6_wp*state%dt_plan)) then
+      call raise_error(err, EXIT_NUMERIC, 'the stable time step fell to ' // str(target) // ' at t = ' // &
+        str(state%time) // ' (step ' // str(state%step) // '), below 1e-6 of the planned ' // str(state%dt_plan) // &
+        ': a finite-strain element is collapsing. Check the loads and supports, or refine the mesh where the ' // &
+        'deformation concentrates')
+      return
+    end if
+    remaining = state%t_end - state%time
+    k = max(1_i8, ceiling(remaining/target, i8))
+    state%dt_prev = state%dt
+    state%dt = remaining/real(k, wp)
+    state%nsteps = state%step + k
+  end subroutine adapt_time_step
+
+  !> An inverted element (J <= 0 at a Gauss point) of a finite-strain body
+  !> stops the run (exit 3), naming the element, its body and the time.
+  subroutine check_deformation(model, state, err)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    type(error_t), intent(inout) :: err
+    integer :: ib, k, e
+    real(wp) :: jmin
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        if (model%bodies(ib)%blocks(k)%kinematics /= KIN_FINITE) cycle
+        call watch_inverted(state%watch(k, ib), e, jmin)
+        if (e == 0) cycle
+        call raise_error(err, EXIT_NUMERIC, 'element ' // str(model%bodies(ib)%blocks(k)%ids(e)) // &
+          ' of body ''' // model%bodies(ib)%name // ''' inverted (J = ' // str(jmin, 4) // &
+          ' <= 0 at a Gauss point) at t = ' // str(state%time) // ' (step ' // str(state%step) // &
+          '). The deformation is beyond what the mesh can follow: refine it there, lower the load or ' // &
+          'its rate, or check the material (svk softens and collapses in strong compression)')
+        return
+      end do
+    end do
+  end subroutine check_deformation
 end module raccord_time_step
