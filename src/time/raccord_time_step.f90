@@ -12,6 +12,7 @@ module raccord_time_step
   use raccord_state, only: state_t
   use raccord_material, only: KIN_FINITE
   use raccord_elastic_block, only: watch_w2, watch_inverted
+  use raccord_finite_kernel, only: block_chunk_len => fin_chunk_len
   use raccord_error, only: EXIT_NUMERIC
   implicit none
   private
@@ -90,11 +91,11 @@ contains
     end do
     target = state%dt_plan
     if (w2 > 0.0_wp) target = min(target, state%safety*2.0_wp/sqrt(w2))
-    if (.not. (target >= 1.0e-6_wp*state%dt_plan)) then
+    if (.not. (target >= 1.0e-4_wp*state%dt_plan)) then
       call raise_error(err, EXIT_NUMERIC, 'the stable time step fell to ' // str(target) // ' at t = ' // &
-        str(state%time) // ' (step ' // str(state%step) // '), below 1e-6 of the planned ' // str(state%dt_plan) // &
-        ': a finite-strain element is collapsing. Check the loads and supports, or refine the mesh where the ' // &
-        'deformation concentrates')
+        str(state%time) // ' (step ' // str(state%step) // '), below 1e-4 of the planned ' // str(state%dt_plan) // &
+        ': ' // most_compressed(model, state) // ' is collapsing. Refine the mesh where the deformation ' // &
+        'concentrates, lower the load or its rate, or check the supports')
       return
     end if
     remaining = state%t_end - state%time
@@ -103,6 +104,33 @@ contains
     state%dt = remaining/real(k, wp)
     state%nsteps = state%step + k
   end subroutine adapt_time_step
+
+  !> 'element <id> of body '<name>' (J = <smallest J>)': the finite-strain
+  !> element with the smallest J at the last forces.
+  function most_compressed(model, state) result(s)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    character(len=:), allocatable :: s
+    real(wp) :: jmin, jb
+    integer :: ib, k, c, e
+    s = 'an element'
+    jmin = huge(1.0_wp)
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        if (model%bodies(ib)%blocks(k)%kinematics /= KIN_FINITE) cycle
+        associate (w => state%watch(k, ib))
+          c = minloc(w%jmin, 1)
+          jb = w%jmin(c)
+          if (jb < jmin .and. w%jmin_el(c) > 0) then
+            jmin = jb
+            e = (c - 1)*block_chunk_len + w%jmin_el(c)
+            s = 'element ' // str(model%bodies(ib)%blocks(k)%ids(e)) // ' of body ''' // model%bodies(ib)%name // &
+              ''' (J = ' // str(jb, 4) // ')'
+          end if
+        end associate
+      end do
+    end do
+  end function most_compressed
 
   !> An inverted element (J <= 0 at a Gauss point) of a finite-strain body
   !> stops the run (exit 3), naming the element, its body and the time.

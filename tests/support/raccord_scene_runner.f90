@@ -10,7 +10,7 @@ module raccord_scene_runner
   use raccord_mesh_io, only: read_mesh
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
-  use raccord_time_step, only: time_plan_t, choose_time_step
+  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
@@ -35,7 +35,8 @@ module raccord_scene_runner
 contains
 
   !> Run the deck at `path` (relative paths against RACCORD_SOURCE_DIR when
-  !> set) to its end, or to t_stop when given.
+  !> set, except ./... paths, which stay relative to the working folder) to
+  !> its end, or to t_stop when given.
   subroutine run_deck(path, run, err, t_stop)
     character(len=*), intent(in) :: path
     type(scene_run_t), intent(out) :: run
@@ -47,7 +48,7 @@ contains
 
     call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
     full = path
-    if (stat == 0 .and. path(1:1) /= '/') full = trim(root) // '/' // path
+    if (stat == 0 .and. path(1:1) /= '/' .and. index(path, './') /= 1) full = trim(root) // '/' // path
     call read_scene(full, run%scene, err)
     if (err%failed()) return
     call read_mesh(run%scene%mesh%file, run%mesh, err, run%scene%mesh%format, run%scene%mesh%scale)
@@ -59,10 +60,18 @@ contains
     call choose_time_step(run%scene, run%model, run%plan, err)
     if (err%failed()) return
     call init_state(run%model, run%plan%dt, run%plan%nsteps, run%state)
+    run%state%t_end = run%plan%t_end
+    run%state%safety = run%scene%time%safety
     if (run%model%has_body_force) run%state%f_ext = run%model%f_body
     associate (state => run%state, model => run%model)
       do
         call compute_forces(model, state)
+        if (model%has_finite) then
+          call check_deformation(model, state, err)
+          if (err%failed()) return
+          call adapt_time_step(model, state, err)
+          if (err%failed()) return
+        end if
         call predict_motion(model, state)
         if (size(run%pairs) > 0) call enforce_contact(run%pairs, model, state, err)
         if (err%failed()) return

@@ -1,0 +1,182 @@
+!> Finite-strain runs through the whole explicit loop (tests/finite/data):
+!> homogeneous confined compression and stretch against the closed forms
+!> in the static limit, the stored energy, the energy balance falling as
+!> dt^2, the step following the deforming mesh, and an inverted element
+!> stopping the run.
+program test_finite_runs
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t, EXIT_NUMERIC
+  use raccord_material, only: moduli_t, make_moduli
+  use raccord_elastic_block, only: add_nodal_stress
+  use raccord_scene_runner, only: scene_run_t, run_deck
+  use raccord_check, only: failure_t, new_test, run_tests, check, check_close
+  use raccord_strings, only: str
+  implicit none
+
+  real(wp), parameter :: young = 7000.0_wp, nu = 0.3_wp
+
+  call run_tests('finite_runs', [ &
+    new_test('neo-Hooke Q4 confined compression to 50 %', test_neo_q4_compression), &
+    new_test('neo-Hooke Q8 confined stretch to 200 %', test_neo_q8_stretch), &
+    new_test('SVK Q4 confined stretch to 200 %', test_svk_q4_stretch), &
+    new_test('SVK Q8 confined compression by 20 %', test_svk_q8_compression), &
+    new_test('energy balance error falls as dt^2', test_balance_order), &
+    new_test('inverted element stops the run (exit 3)', test_inversion)])
+
+contains
+
+  !> A copy of data/confined.nml with the material, mesh and stretch l
+  !> (top displacement l - 1), written where the test runs; extra lines
+  !> replace the &time group when given.
+  function write_deck(name, material, mesh, l, time_group) result(path)
+    character(len=*), intent(in) :: name, material, mesh
+    real(wp), intent(in) :: l
+    character(len=*), intent(in), optional :: time_group
+    character(len=:), allocatable :: path
+    character(len=512) :: root
+    character(len=32) :: val
+    integer :: u, length, stat
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    path = './' // name // '.nml'
+    write(val, '(es23.15)') l - 1.0_wp
+    open(newunit=u, file=path, status='replace', action='write')
+    write(u, '(a)') '&mesh file = ''' // trim(root) // '/tests/finite/data/' // mesh // ''' /'
+    write(u, '(a)') '&body name = ''block'', young = 7000.0, poisson = 0.3, density = 1.0e-9,'
+    write(u, '(a)') '  kinematics = ''finite'', material = ''' // material // ''' /'
+    write(u, '(a)') '&amplitude name = ''ramp'', time = 0.0, 1.0e-4, value = 0.0, 1.0 /'
+    write(u, '(a)') '&boundary set = ''bottom'', type = ''fixed'', components = ''y'' /'
+    write(u, '(a)') '&boundary set = ''left'', type = ''fixed'', components = ''x'' /'
+    write(u, '(a)') '&boundary set = ''right'', type = ''fixed'', components = ''x'' /'
+    write(u, '(a)') '&boundary set = ''top'', type = ''displacement'', components = ''y'', value = 0.0, ' // &
+      trim(adjustl(val)) // ', amplitude = ''ramp'' /'
+    if (present(time_group)) then
+      write(u, '(a)') time_group
+    else
+      write(u, '(a)') '&time t_end = 2.5e-4, damping = 1.0e6 /'
+    end if
+    close(u)
+  end function write_deck
+
+  !> Confined closed forms (method brief 3.3), F = diag(1, l): Cauchy
+  !> (sxx, syy, sxy, szz) and the stored energy per unit volume.
+  subroutine confined(material, l, s, w)
+    character(len=*), intent(in) :: material
+    real(wp), intent(in) :: l
+    real(wp), intent(out) :: s(4), w
+    type(moduli_t) :: m
+    real(wp) :: e
+    m = make_moduli(young, nu)
+    if (material == 'neo_hooke') then
+      s(2) = 2.0_wp*m%g/3.0_wp*l**(-5.0_wp/3.0_wp)*(l*l - 1.0_wp) + m%k*(l - 1.0_wp)
+      s(1) = m%g/3.0_wp*l**(-5.0_wp/3.0_wp)*(1.0_wp - l*l) + m%k*(l - 1.0_wp)
+      w = 0.5_wp*m%g*(l**(-2.0_wp/3.0_wp)*(2.0_wp + l*l) - 3.0_wp) + 0.5_wp*m%k*(l - 1.0_wp)**2
+    else
+      s(2) = (m%lam + 2.0_wp*m%g)*l*(l*l - 1.0_wp)/2.0_wp
+      s(1) = m%lam*(l*l - 1.0_wp)/(2.0_wp*l)
+      e = 0.5_wp*(l*l - 1.0_wp)
+      w = 0.5_wp*(m%lam + 2.0_wp*m%g)*e*e
+    end if
+    s(3) = 0.0_wp
+    s(4) = s(1)
+  end subroutine confined
+
+  !> Run the confined deck and compare every nodal stress and the stored
+  !> energy with the closed form (static limit: damped hold after the ramp).
+  subroutine check_confined(failure, name, material, mesh, l)
+    type(failure_t), allocatable, intent(inout) :: failure
+    character(len=*), intent(in) :: name, material, mesh
+    real(wp), intent(in) :: l
+    type(scene_run_t), allocatable :: run
+    type(error_t) :: err
+    real(wp), allocatable :: s(:,:), wsum(:)
+    real(wp) :: expect(4), w, worst
+    integer :: k, n
+    allocate(run)
+    call run_deck(write_deck(name, material, mesh, l), run, err)
+    call check(failure, .not. err%failed(), name // ': ' // err%message)
+    if (allocated(failure)) return
+    call confined(material, l, expect, w)
+    allocate(s(4, run%model%nnode), wsum(run%model%nnode), source=0.0_wp)
+    do k = 1, size(run%model%bodies(1)%blocks)
+      call add_nodal_stress(run%model%bodies(1)%blocks(k), run%state%u, s, wsum)
+    end do
+    worst = 0.0_wp
+    do n = 1, run%model%nnode
+      if (wsum(n) > 0.0_wp) worst = max(worst, maxval(abs(s(:, n)/wsum(n) - expect)))
+    end do
+    print '(a)', '  ' // name // ': largest nodal stress error ' // str(worst/abs(expect(2)), 3) // &
+      ' of |sigma_yy| = ' // str(abs(expect(2)), 6) // '; stored energy ' // str(run%state%energy%internal, 8) // &
+      ' (closed form ' // str(w, 8) // '); ' // str(run%state%step) // ' steps, last dt / planned dt ' // &
+      str(run%state%dt/run%plan%dt, 3)
+    ! Method brief 5.2: compressed to l = 0.5 the true stable step is 0.605
+    ! of the undeformed one (the wave modulus grows faster than the length
+    ! shrinks); stretched to 2 it is 0.576. The step must have followed.
+    if (abs(l - 1.0_wp) >= 0.5_wp) call check(failure, run%state%dt < 0.65_wp*run%plan%dt, name // &
+      ': the step did not follow the deforming mesh, dt / planned = ' // str(run%state%dt/run%plan%dt))
+    call check(failure, worst < 1.0e-6_wp*abs(expect(2)), name // ': nodal stress off by ' // str(worst))
+    call check_close(failure, run%state%energy%internal, w, name // ': stored energy', rel_tol=1.0e-6_wp)
+    call check(failure, run%worst_balance < 1.0e-3_wp, name // ': energy balance ' // str(run%worst_balance))
+  end subroutine check_confined
+
+  subroutine test_neo_q4_compression(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_confined(failure, 'neo_q4_l050', 'neo_hooke', 'block.msh', 0.5_wp)
+  end subroutine test_neo_q4_compression
+
+  subroutine test_neo_q8_stretch(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_confined(failure, 'neo_q8_l200', 'neo_hooke', 'block_q8.msh', 2.0_wp)
+  end subroutine test_neo_q8_stretch
+
+  subroutine test_svk_q4_stretch(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_confined(failure, 'svk_q4_l200', 'svk', 'block.msh', 2.0_wp)
+  end subroutine test_svk_q4_stretch
+
+  subroutine test_svk_q8_compression(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_confined(failure, 'svk_q8_l080', 'svk', 'block_q8.msh', 0.8_wp)
+  end subroutine test_svk_q8_compression
+
+  !> Undamped, fast compression to l = 0.6 (dynamic; the step shrinks as
+  !> the layer stiffens): the worst balance error over the run falls about
+  !> 4x when the safety factor (so dt) is halved (doc/theory-finite.md).
+  subroutine test_balance_order(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(scene_run_t), allocatable :: run
+    type(error_t) :: err
+    real(wp) :: e(2)
+    integer :: k
+    character(len=*), parameter :: groups(2) = [character(len=40) :: &
+      '&time t_end = 2.0e-5, safety = 0.8 /', '&time t_end = 2.0e-5, safety = 0.4 /']
+    do k = 1, 2
+      allocate(run)
+      call run_deck(write_deck('dyn' // str(k), 'neo_hooke', 'block.msh', 0.6_wp, trim(groups(k))), run, err)
+      call check(failure, .not. err%failed(), 'run ' // str(k) // ': ' // err%message)
+      if (allocated(failure)) return
+      e(k) = run%worst_balance
+      deallocate(run)
+    end do
+    print '(a)', '  worst balance error ' // str(e(1), 3) // ' (safety 0.8), ' // str(e(2), 3) // &
+      ' (safety 0.4): ratio ' // str(e(1)/e(2), 3)
+    call check(failure, e(1)/e(2) > 3.0_wp .and. e(1)/e(2) < 5.5_wp, 'balance error ratio ' // str(e(1)/e(2)))
+    call check(failure, e(1) < 1.0e-3_wp, 'balance error ' // str(e(1)))
+  end subroutine test_balance_order
+
+  !> Driving the top through the bottom inverts the elements: exit 3,
+  !> naming the element and the body.
+  subroutine test_inversion(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(scene_run_t), allocatable :: run
+    type(error_t) :: err
+    allocate(run)
+    call run_deck(write_deck('invert', 'neo_hooke', 'block.msh', -0.2_wp), run, err)
+    call check(failure, err%failed(), 'the run went through an inverted mesh')
+    if (allocated(failure)) return
+    call check(failure, err%code == EXIT_NUMERIC, 'exit code ' // str(err%code))
+    call check(failure, (index(err%message, 'inverted') > 0 .or. index(err%message, 'collapsing') > 0) .and. &
+      index(err%message, 'element ') > 0 .and. index(err%message, 'body ''block''') > 0 .and. &
+      index(err%message, 't = ') > 0, 'message: ' // err%message)
+    print '(a)', '  ' // err%message
+  end subroutine test_inversion
+end program test_finite_runs
