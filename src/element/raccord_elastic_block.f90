@@ -442,7 +442,12 @@ contains
       do g = 1, blk%ngp
         blk%sc(il, g, ic) = sqrt(blk%c(g, e))
       end do
-      blk%vol0(il, ic) = sum(blk%c(:, e))
+      ! V_e summed as the kernel sums the current volume (F-3), so that
+      ! Jbar = 1 exactly at rest
+      blk%vol0(il, ic) = 0.0_wp
+      do g = 1, blk%ngp
+        blk%vol0(il, ic) = blk%vol0(il, ic) + 1.0_wp*blk%sc(il, g, ic)**2
+      end do
       ! corner diagonals (corners are the element's first four nodes)
       x1 = x(:, blk%conn(1, e))
       x2 = x(:, blk%conn(2, e))
