@@ -1,0 +1,170 @@
+#!/bin/sh
+# The raccord program with finite-strain bodies, end to end: one case per
+# CTest entry finite_<case>.
+#
+#   sh finite_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
+#
+# CASE        refuse, invert, restart
+# refuse      decks whose kinematics and material do not go together exit 2
+#             before anything is written, naming the body and what to write
+# invert      a block driven through its support inverts: exit 3, the message
+#             names the element, the body and the time, and nothing looks complete
+# restart     a neo-Hooke slider pressed and dragged on a steel base (mixed
+#             scene, friction, variable step): stopped by SIGUSR1 in mid-run
+#             and restarted, its results equal the continuous run's bit for bit
+# Needs sh, awk, cmp, h5dump and h5diff (hdf5-tools); 77 = skipped.
+set -u
+
+case_name=$1
+raccord=$2
+src=$3
+work=$4
+
+npass=0
+nfail=0
+pass() { npass=$((npass + 1)); echo "ok   [$case_name] $*"; }
+fail() { nfail=$((nfail + 1)); echo "FAIL [$case_name] $*"; }
+check() { # description command...
+  what=$1
+  shift
+  if "$@"; then pass "$what"; else fail "$what"; fi
+}
+finish() {
+  echo "$npass passed, $nfail failed"
+  [ "$nfail" -eq 0 ]
+  exit $?
+}
+has() { grep -qF -- "$2" "$1"; }
+
+for tool in h5dump h5diff; do
+  command -v "$tool" > /dev/null 2>&1 || { echo "skipped: $tool (hdf5-tools) not found"; exit 77; }
+done
+rm -rf "$work"
+mkdir -p "$work" || exit 1
+cd "$work" || exit 1
+export GFORTRAN_ERROR_BACKTRACE=0
+unset RACCORD_WALLCLOCK_SECONDS
+
+# block DECK BODY_KEYS [TOP_DISPLACEMENT]: the unit block of tests/finite/data,
+# bottom held in y, sides in x, top driven down.
+block() {
+  cat > "$1" <<EOD
+&mesh file = '$src/tests/finite/data/block.msh' /
+&body name = 'block', young = 7000.0, poisson = 0.3, density = 1.0e-9, $2 /
+&amplitude name = 'ramp', time = 0.0, 1.0e-4, value = 0.0, 1.0 /
+&boundary set = 'bottom', type = 'fixed', components = 'y' /
+&boundary set = 'left', type = 'fixed', components = 'x' /
+&boundary set = 'right', type = 'fixed', components = 'x' /
+&boundary set = 'top', type = 'displacement', components = 'y', value = 0.0, ${3:--0.5}, amplitude = 'ramp' /
+&time t_end = 1.2e-4, damping = 1.0e6 /
+EOD
+}
+
+# refused NAME BODY_KEYS TEXT...: exit 2, stderr names the body and each TEXT, no file written.
+refused() {
+  name=$1
+  keys=$2
+  shift 2
+  mkdir -p "$name"
+  block "$name/deck.nml" "$keys"
+  "$raccord" -o "$name/out" "$name/deck.nml" > "$name/stdout.txt" 2> "$name/stderr.txt"
+  code=$?
+  check "$name: exit 2 (got $code)" test "$code" -eq 2
+  check "$name: the message names the body" has "$name/stderr.txt" "&body 'block'"
+  for t in "$@"; do
+    check "$name: the message says '$t'" has "$name/stderr.txt" "$t"
+  done
+  check "$name: no Fortran runtime message or backtrace" sh -c "! grep -qiE 'backtrace|fortran runtime|error stop' '$name/stderr.txt'"
+  check "$name: nothing written" test ! -e "$name/out"
+}
+
+case "$case_name" in
+refuse)
+  refused finite_linear "kinematics = 'finite'" "material = 'neo_hooke'" "kinematics = 'small'"
+  refused small_neo "material = 'neo_hooke'" "kinematics = 'finite'" "material = 'linear_elastic'"
+  refused small_svk "kinematics = 'small', material = 'svk'" "kinematics = 'finite'"
+  refused finite_plane_stress "kinematics = 'finite', material = 'neo_hooke', hypothesis = 'plane_stress'" \
+    "plane strain only" "hypothesis = 'plane_strain'"
+  refused unknown_material "kinematics = 'finite', material = 'mooney'" "unknown material 'mooney'" "'neo_hooke'"
+  refused unknown_kinematics "kinematics = 'large'" "unknown kinematics 'large'" "'finite'"
+  refused svk_mean "kinematics = 'finite', material = 'svk', volumetric = 'mean_dilatation'" \
+    "mean dilatation is built for neo_hooke only"
+  refused small_volumetric "volumetric = 'full'" "finite-strain option"
+  # and the accepted pairs are named in the plan
+  block ok.nml "kinematics = 'finite', material = 'neo_hooke'"
+  "$raccord" --check ok.nml > check.txt 2>&1
+  code=$?
+  check "--check of a finite body: exit 0 (got $code)" test "$code" -eq 0
+  check "--check names kinematics, material and the Q4 treatment" has check.txt \
+    "plane strain, finite strain, neo_hooke (Q4 mean_dilatation)"
+  check "--check writes the keys back" has check.txt "kinematics = 'finite'"
+  ;;
+invert)
+  block inv.nml "kinematics = 'finite', material = 'neo_hooke'" -1.3
+  "$raccord" -o out inv.nml > stdout.txt 2> stderr.txt
+  code=$?
+  check "driven through its support: exit 3 (got $code)" test "$code" -eq 3
+  check "the message names the body" has stderr.txt "of body 'block'"
+  check "the message names an element" sh -c "grep -qE 'element [0-9]+ of body' stderr.txt"
+  check "the message gives the time" has stderr.txt "at t = "
+  check "no Fortran runtime message or backtrace" sh -c "! grep -qiE 'backtrace|fortran runtime|error stop' stderr.txt"
+  check "nothing looks complete" test -z "$(find out \( -name inv.h5 -o -name inv.xmf -o -name inv.history.txt \) -print)"
+  check "the results are marked incomplete" test -n "$(find out -name '*.incomplete.*' -print)"
+  ;;
+restart)
+  deck() {
+    mkdir -p "$1"
+    cat > "$1/slide.nml" <<EOD
+! A neo-Hooke slider on a steel base, mu = 0.3: pressed, pulled right, then back.
+&mesh file = '$src/input/verification/sliding/sliding_q4.msh' /
+&body name = 'base', elset = 'base', young = 200000.0, poisson = 0.3, density = 7.8e-9 /
+&body name = 'slider', elset = 'slider', young = 2000.0, poisson = 0.45, density = 1.2e-9,
+  kinematics = 'finite', material = 'neo_hooke' /
+&amplitude name = 'press', time = 0.0, 4.0e-5, value = 0.0, 1.0 /
+&amplitude name = 'pull', time = 5.0e-5, 8.0e-5, 1.2e-4, value = 0.0, 1.0, -1.0 /
+&boundary set = 'base_bottom', type = 'fixed', components = 'xy' /
+&boundary set = 'slider_top', type = 'pressure', pressure = 100.0, amplitude = 'press' /
+&boundary set = 'slider_right', type = 'traction', value = 120.0, 0.0, amplitude = 'pull' /
+&time t_end = 1.3e-4, damping = 2.0e6 /
+&output frames = 13, history_every = 7 /
+&contact_pair slave = 'slider_bottom', master = 'base_top', friction = 0.3, method = 'mortar' /
+EOD
+  }
+  deck cont
+  "$raccord" -q -o cont cont/slide.nml > cont/run.out 2>&1
+  code=$?
+  check "continuous run: exit 0 (got $code)" test "$code" -eq 0
+  [ "$code" -eq 0 ] || { cat cont/run.out; finish; }
+  check "the slider is finite strain with a variable step" has cont/slide.log "finite strain, neo_hooke"
+  deck usr1
+  "$raccord" -q -o usr1 usr1/slide.nml > usr1/run.out 2>&1 &
+  pid=$!
+  n=0
+  while [ "$(awk '!/^#/ && NF > 2 { s = $2 } END { print s + 0 }' usr1/slide.history.txt.part 2>/dev/null || echo 0)" -lt 300 ]; do
+    kill -0 "$pid" 2>/dev/null || { fail "raccord ended before it could be stopped"; finish; }
+    n=$((n + 1))
+    [ "$n" -lt 6000 ] || { kill -9 "$pid"; fail "never reached step 300"; finish; }
+    sleep 0.01
+  done
+  kill -STOP "$pid"
+  kill -USR1 "$pid"
+  kill -CONT "$pid"
+  wait "$pid"
+  code=$?
+  check "SIGUSR1: exit 5 (got $code)" test "$code" -eq 5
+  check "SIGUSR1: checkpoint written" test -s usr1/slide.checkpoint.h5
+  "$raccord" -q --restart usr1/slide.checkpoint.h5 > usr1/restart.out 2>&1
+  code=$?
+  check "restart: exit 0 (got $code)" test "$code" -eq 0
+  for f in slide.history.txt slide.contact1.txt slide.xmf; do
+    check "$f equals the continuous run's, byte for byte" cmp -s "cont/$f" "usr1/$f"
+  done
+  check "slide.h5 equals the continuous run's (h5diff, no tolerance)" \
+    h5diff --exclude-path /scene --exclude-path /scene_path cont/slide.h5 usr1/slide.h5
+  ;;
+*)
+  echo "unknown case $case_name" >&2
+  exit 2
+  ;;
+esac
+finish
