@@ -5,6 +5,7 @@ module raccord_bench_util
   use raccord_error, only: error_t
   use raccord_mesh, only: mesh_t, ELEM_Q8
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED
+  use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
   implicit none
@@ -70,8 +71,10 @@ contains
   !> program builds one (build_model): one body of steel-like material
   !> (E = 210 GPa, nu = 0.3, rho = 7800, plane strain, SI units), clamped on
   !> the left side x = 0, moving at v0 = (0, 1) m/s. x and conn are consumed.
-  subroutine plate_model(etype, x, conn, model, err)
+  subroutine plate_model(etype, x, conn, model, err, finite)
     integer, intent(in) :: etype
+    !> a finite-strain neo-Hooke plate (default: small strain, Hooke)
+    logical, intent(in), optional :: finite
     real(wp), allocatable, intent(inout) :: x(:,:)
     integer, allocatable, intent(inout) :: conn(:,:)
     type(model_t), intent(out) :: model
@@ -108,6 +111,12 @@ contains
     scene%bodies(1)%poisson = 0.3_wp
     scene%bodies(1)%density = 7800.0_wp
     scene%bodies(1)%velocity = [0.0_wp, 1.0_wp]
+    if (present(finite)) then
+      if (finite) then
+        scene%bodies(1)%kinematics = KIN_FINITE
+        scene%bodies(1)%material = MAT_NEO_HOOKE
+      end if
+    end if
     bc%set = 'left'
     bc%kind = BC_FIXED
     bc%comp = [.true., .true.]

@@ -56,7 +56,7 @@ module raccord_elastic_block
   use raccord_colouring, only: colour_chunks
   use raccord_material, only: moduli_t, make_moduli, KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, &
     VOL_FULL, material_name
-  use raccord_finite_kernel, only: kernel_finite, fin_chunk_len
+  use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   implicit none
   private
 
@@ -76,7 +76,7 @@ module raccord_elastic_block
   integer, parameter :: max_nen = 8, max_gp = 9
   !> The kernel of a block, chosen once (make_finite, init_elastic_block):
   !> small-strain Q4 split, small-strain Q8, finite strain (Q4 or Q8).
-  integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE = 3
+  integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE_Q4 = 3, KERN_FINITE_Q8 = 4
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
   !> M11, M12, M22 (eq. 6.5).
@@ -131,8 +131,9 @@ module raccord_elastic_block
     ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
-    ! Finite strain only (Q4 and Q8; h above holds H = sqrt(c) J0^-1 for both)
-    real(wp), allocatable, private :: sc(:,:,:)      !< (chunk_len, ngp, nchunk) sqrt(c)
+    ! Finite strain only (Q4 and Q8)
+    real(wp), allocatable, private :: jinv(:,:,:,:)  !< (chunk_len, 4, ngp, nchunk) J0^-1, column-major
+    real(wp), allocatable, private :: cw(:,:,:)      !< (chunk_len, ngp, nchunk) c = w det J0 thickness
     real(wp), allocatable, private :: vol0(:,:)      !< (chunk_len, nchunk) reference volume V_e
     real(wp), allocatable, private :: diag(:,:,:)    !< (chunk_len, 4, nchunk) X3 - X1, X4 - X2
   end type elastic_block_t
@@ -422,10 +423,11 @@ contains
     blk%volumetric = volumetric
     blk%density = density
     blk%moduli = make_moduli(blk%young, blk%poisson)
-    blk%kernel = KERN_FINITE
+    blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
     if (.not. allocated(blk%h)) call init_gauss_maps(blk, x, err)
     if (err%failed()) return
-    allocate(blk%sc(chunk_len, blk%ngp, blk%nchunk), blk%vol0(chunk_len, blk%nchunk), &
+    allocate(blk%jinv(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
+      blk%vol0(chunk_len, blk%nchunk), &
       blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
     if (stat /= 0) then
       call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
@@ -433,20 +435,25 @@ contains
       return
     end if
     ! padding lanes of the last chunk: a unit element, never scattered
-    blk%sc = 1.0_wp
+    blk%jinv = 0.0_wp
+    blk%jinv(:, 1, :, :) = 1.0_wp
+    blk%jinv(:, 4, :, :) = 1.0_wp
+    blk%cw = 1.0_wp
     blk%vol0 = 1.0_wp
     blk%diag = 1.0_wp
     do e = 1, blk%nel
       ic = (e - 1)/chunk_len + 1
       il = e - (ic - 1)*chunk_len
       do g = 1, blk%ngp
-        blk%sc(il, g, ic) = sqrt(blk%c(g, e))
+        ! J0^-1 = H / sqrt(c), c (init_gauss_maps)
+        blk%jinv(il, :, g, ic) = blk%h(il, :, g, ic)/sqrt(blk%c(g, e))
+        blk%cw(il, g, ic) = blk%c(g, e)
       end do
       ! V_e summed as the kernel sums the current volume (F-3), so that
       ! Jbar = 1 exactly at rest
       blk%vol0(il, ic) = 0.0_wp
       do g = 1, blk%ngp
-        blk%vol0(il, ic) = blk%vol0(il, ic) + 1.0_wp*blk%sc(il, g, ic)**2
+        blk%vol0(il, ic) = blk%vol0(il, ic) + 1.0_wp*blk%cw(il, g, ic)
       end do
       ! corner diagonals (corners are the element's first four nodes)
       x1 = x(:, blk%conn(1, e))
@@ -663,7 +670,7 @@ contains
     !> finite strain: per-chunk energy, smallest J and (with monitor) omega^2
     type(block_watch_t), intent(inout), optional :: watch
     logical, intent(in), optional :: monitor
-    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), lfac, rinv, en, jm, w2
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rinv, en, jm, w2
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
     logical :: reset, mon, watched
     nen = blk%nen
@@ -672,12 +679,10 @@ contains
     mon = .false.
     if (present(monitor)) mon = monitor
     watched = present(watch)
-    lfac = 1.0_wp
-    if (blk%etype == ELEM_Q8) lfac = 0.3_wp
     rinv = 0.0_wp
     if (blk%density > 0.0_wp) rinv = 1.0_wp/blk%density
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, lfac, rinv) &
+    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, rinv) &
     !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
@@ -705,17 +710,19 @@ contains
             call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
           case (KERN_Q8)
             call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
-          case (KERN_FINITE)
-            call kernel_finite(nc, nen, blk%ngp, blk%material, blk%volumetric, blk%moduli, blk%dnref, &
-              blk%h(:, :, :, ic), blk%sc(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), lfac, rinv, &
-              blk%thickness, mon, ue, fe, en, jm, jel, w2)
-            if (watched) then
-              watch%energy(ic) = en
-              watch%jmin(ic) = jm
-              watch%jmin_el(ic) = jel
-              if (mon) watch%w2(ic) = w2
-            end if
+          case (KERN_FINITE_Q4)
+            call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%jinv(:, :, :, ic), &
+              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+          case (KERN_FINITE_Q8)
+            call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%jinv(:, :, :, ic), &
+              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
           end select
+          if (watched .and. blk%kinematics == KIN_FINITE) then
+            watch%energy(ic) = en
+            watch%jmin(ic) = jm
+            watch%jmin_el(ic) = jel
+            if (mon) watch%w2(ic) = w2
+          end if
           do a = 1, nen
             do i = 1, nc
               node = blk%conn(a, e0 + i)

@@ -26,13 +26,11 @@
 !> and rho0 c_e^2 the material's bound of the current wave modulus.
 module raccord_finite_kernel
   use raccord_kinds, only: wp
-  use raccord_material, only: moduli_t, MAT_NEO_HOOKE, MAT_SVK, VOL_MEAN, neo_hooke_tau, neo_hooke_iso_tau, &
-    neo_hooke_energy, neo_hooke_iso_energy, volumetric_energy, svk_tau, svk_energy, first_piola, &
-    wave_modulus_neo_hooke, wave_modulus_svk
+  use raccord_material, only: moduli_t, MAT_NEO_HOOKE, MAT_SVK, VOL_MEAN
   implicit none
   private
 
-  public :: kernel_finite
+  public :: kernel_finite_q4, kernel_finite_q8
 
   !> Elements per chunk: the same as raccord_elastic_block's chunk_len.
   integer, parameter, public :: fin_chunk_len = 32
@@ -44,154 +42,137 @@ contains
   !> stored energy; jmin = the smallest J over their Gauss points and jmin_el
   !> the chunk position of that element; with monitor, w2 = the largest
   !> omega^2 estimate 4 c^2 / L^2 of the chunk (0 when not asked).
-  !> dn(2, nen, ngp): natural derivatives; h(:, 4, g): H = sqrt(c) J0^-1
-  !> column-major; sc(:, g) = sqrt(c); vol0 = V_e; diag(:, 1:4) = reference
+  !> dn(2, nen, ngp): natural derivatives; jinv(:, 4, g): J0^-1
+  !> column-major; cw(:, g) = c = w det J0 t0; vol0 = V_e; diag(:, 1:4) = reference
   !> corner diagonals X3 - X1, X4 - X2 (x, y each); lfac = 1 (Q4) or 0.3 (Q8);
   !> rinv = 1/rho0; thickness t0 turns the element volume into its area.
-  pure subroutine kernel_finite(nc, nen, ngp, mat, vol, m, dn, h, sc, vol0, diag, lfac, rinv, thickness, monitor, &
+  !> The body is raccord_finite_kernel_body.inc, one copy per element type.
+  !>
+  !> Q4: 4 nodes, 2x2 Gauss, L_e = A / longest diagonal.
+  pure subroutine kernel_finite_q4(nc, mat, vol, m, dn, jinv, cw, vol0, diag, rinv, thickness, monitor, &
       ue, fe, energy, jmin, jmin_el, w2)
-    integer, intent(in) :: nc, nen, ngp, mat, vol
+    integer, parameter :: nen = 4, ngp = 4
+    real(wp), parameter :: lfac = 1.0_wp
+    include 'raccord_finite_kernel_body.inc'
+  end subroutine kernel_finite_q4
+
+  !> Q8: 8 nodes, 3x3 Gauss, L_e = 0.3 A / longest corner diagonal.
+  pure subroutine kernel_finite_q8(nc, mat, vol, m, dn, jinv, cw, vol0, diag, rinv, thickness, monitor, &
+      ue, fe, energy, jmin, jmin_el, w2)
+    integer, parameter :: nen = 8, ngp = 9
+    real(wp), parameter :: lfac = 0.3_wp
+    include 'raccord_finite_kernel_body.inc'
+  end subroutine kernel_finite_q8
+
+  !> Neo-Hooke (M-1, M-2) at one Gauss point of nc elements: P into pk,
+  !> c W added to we, the wave-modulus bound (method brief 5.2) maxed into
+  !> wmod. With mean dilatation the pressure is the element's pbar and the
+  !> volumetric energy is not added here (the caller adds V_e U(Jbar)).
+  !> One power per point; the loop has no branch and vectorises.
+  pure subroutine neo_hooke_chunk(nc, m, mean, f, detf, pbar, cw, pk, we, wmod)
+    integer, intent(in) :: nc
     type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: dn(2, nen, ngp), h(fin_chunk_len, 4, ngp), sc(fin_chunk_len, ngp), vol0(fin_chunk_len)
-    real(wp), intent(in) :: diag(fin_chunk_len, 4), lfac, rinv, thickness
-    logical, intent(in) :: monitor
-    real(wp), intent(in) :: ue(fin_chunk_len, 2, max_nen)
-    real(wp), intent(inout) :: fe(fin_chunk_len, 2, max_nen)
-    real(wp), intent(out) :: energy, jmin, w2
-    integer, intent(out) :: jmin_el
-    real(wp) :: f(fin_chunk_len, 4, max_gp), detf(fin_chunk_len, max_gp), pbar(fin_chunk_len)
-    real(wp) :: we(fin_chunk_len), wmod(fin_chunk_len), area(fin_chunk_len)
-    real(wp) :: d11, d12, d21, d22, g11, g12, g21, g22, r, tau(4), tau33, jg, fl(4), pk(fin_chunk_len, 4)
-    real(wp) :: t11, t12, t21, t22, c, dx1, dy1, dx2, dy2, l2
-    integer :: g, a, i
-    logical :: mean
-
-    mean = vol == VOL_MEAN
-    fe(1:nc, :, 1:nen) = 0.0_wp
-    we(1:nc) = 0.0_wp
-    area(1:nc) = 0.0_wp
-    wmod(1:nc) = 0.0_wp
-    jmin = huge(1.0_wp)
-    jmin_el = 0
-
-    ! (F-1): the deformation gradient at every Gauss point of the chunk
-    gradients: do g = 1, ngp
-      do i = 1, nc
-        d11 = 0.0_wp
-        d12 = 0.0_wp
-        d21 = 0.0_wp
-        d22 = 0.0_wp
-        do a = 1, nen
-          d11 = d11 + ue(i, 1, a)*dn(1, a, g)
-          d12 = d12 + ue(i, 1, a)*dn(2, a, g)
-          d21 = d21 + ue(i, 2, a)*dn(1, a, g)
-          d22 = d22 + ue(i, 2, a)*dn(2, a, g)
-        end do
-        r = 1.0_wp/sc(i, g)
-        g11 = (d11*h(i, 1, g) + d12*h(i, 2, g))*r
-        g12 = (d11*h(i, 3, g) + d12*h(i, 4, g))*r
-        g21 = (d21*h(i, 1, g) + d22*h(i, 2, g))*r
-        g22 = (d21*h(i, 3, g) + d22*h(i, 4, g))*r
-        f(i, 1, g) = 1.0_wp + g11
-        f(i, 2, g) = g21
-        f(i, 3, g) = g12
-        f(i, 4, g) = 1.0_wp + g22
-        detf(i, g) = f(i, 1, g)*f(i, 4, g) - f(i, 2, g)*f(i, 3, g)
-        area(i) = area(i) + detf(i, g)*sc(i, g)**2
-      end do
-    end do gradients
-
-    ! An inverted element (J <= 0) is reported, not computed: the caller
-    ! stops the run (exit 3). Its stress is evaluated at |J| so that no
-    ! invalid operation is raised on the way.
-    do g = 1, ngp
-      do i = 1, nc
-        if (detf(i, g) < jmin) then
-          jmin = detf(i, g)
-          jmin_el = i
-        end if
-      end do
-    end do
-    if (jmin <= 0.0_wp) detf(1:nc, 1:ngp) = max(abs(detf(1:nc, 1:ngp)), tiny(1.0_wp))
-
-    ! (F-3): the element pressure of mean dilatation and its energy
+    logical, intent(in) :: mean
+    real(wp), intent(in) :: f(fin_chunk_len, 4), detf(fin_chunk_len), pbar(fin_chunk_len), cw(fin_chunk_len)
+    real(wp), intent(out) :: pk(fin_chunk_len, 4)
+    real(wp), intent(inout) :: we(fin_chunk_len), wmod(fin_chunk_len)
+    real(wp) :: pb(fin_chunk_len), vol_w
+    real(wp) :: f11, f21, f12, f22, j, b11, b22, b12, trb, jm23, gj, tr3, t11, t22, t12, t33, p, r, rad, mid, tmax
+    real(wp) :: mubar
+    integer :: i
+    ! the pressure of each element: K (J - 1) per point, or the element's
     if (mean) then
-      do i = 1, nc
-        jg = area(i)/vol0(i)
-        pbar(i) = m%k*(jg - 1.0_wp)
-        we(i) = vol0(i)*volumetric_energy(m, jg)
-      end do
+      pb(1:nc) = pbar(1:nc)
+      vol_w = 0.0_wp
+    else
+      pb(1:nc) = m%k*(detf(1:nc) - 1.0_wp)
+      vol_w = 0.5_wp*m%k
     end if
+    do i = 1, nc
+      f11 = f(i, 1)
+      f21 = f(i, 2)
+      f12 = f(i, 3)
+      f22 = f(i, 4)
+      j = detf(i)
+      ! B = F F^T (in-plane), B33 = 1
+      b11 = f11*f11 + f12*f12
+      b22 = f21*f21 + f22*f22
+      b12 = f11*f21 + f12*f22
+      trb = b11 + b22 + 1.0_wp
+      jm23 = exp(log(j)*(-2.0_wp/3.0_wp))
+      ! isochoric Kirchhoff stress G dev(Bbar) (M-2)
+      gj = m%g*jm23
+      tr3 = trb/3.0_wp
+      t11 = gj*(b11 - tr3)
+      t22 = gj*(b22 - tr3)
+      t12 = gj*b12
+      t33 = gj*(1.0_wp - tr3)
+      ! wave modulus bound: K J^2 + (4 mubar + 7 max|tau_dev,a|)/3
+      mubar = m%g*jm23*trb/3.0_wp
+      mid = 0.5_wp*(t11 + t22)
+      rad = sqrt((0.5_wp*(t11 - t22))**2 + t12*t12)
+      tmax = max(abs(mid + rad), abs(mid - rad), abs(t33))
+      wmod(i) = max(wmod(i), m%k*j*j + (4.0_wp*mubar + 7.0_wp*tmax)/3.0_wp)
+      ! stored energy C10 (Ibar1 - 3) [+ (K/2)(J - 1)^2] (M-1)
+      we(i) = we(i) + cw(i)*(0.5_wp*m%g*(jm23*trb - 3.0_wp) + vol_w*(j - 1.0_wp)**2)
+      ! tau = G dev(Bbar) + p J I, P = tau F^-T, F^-T = [[F22, -F21], [-F12, F11]]/J
+      p = pb(i)*j
+      t11 = t11 + p
+      t22 = t22 + p
+      r = 1.0_wp/j
+      pk(i, 1) = r*(t11*f22 - t12*f12)
+      pk(i, 2) = r*(t12*f22 - t22*f12)
+      pk(i, 3) = r*(t12*f11 - t11*f21)
+      pk(i, 4) = r*(t22*f11 - t12*f21)
+    end do
+  end subroutine neo_hooke_chunk
 
-    ! Stress (one material per chunk) and forces (F-2)
-    points: do g = 1, ngp
-      select case (mat)
-      case (MAT_NEO_HOOKE)
-        if (mean) then
-          do i = 1, nc
-            fl = f(i, :, g)
-            call neo_hooke_iso_tau(m, fl, detf(i, g), tau, tau33)
-            tau(1) = tau(1) + pbar(i)*detf(i, g)
-            tau(4) = tau(4) + pbar(i)*detf(i, g)
-            pk(i, :) = first_piola(fl, detf(i, g), tau)
-            we(i) = we(i) + sc(i, g)**2*neo_hooke_iso_energy(m, fl, detf(i, g))
-          end do
-        else
-          do i = 1, nc
-            fl = f(i, :, g)
-            call neo_hooke_tau(m, fl, detf(i, g), tau, tau33)
-            pk(i, :) = first_piola(fl, detf(i, g), tau)
-            we(i) = we(i) + sc(i, g)**2*neo_hooke_energy(m, fl, detf(i, g))
-          end do
-        end if
-        if (monitor) then
-          do i = 1, nc
-            fl = f(i, :, g)
-            wmod(i) = max(wmod(i), wave_modulus_neo_hooke(m, fl, detf(i, g)))
-          end do
-        end if
-      case (MAT_SVK)
-        do i = 1, nc
-          fl = f(i, :, g)
-          call svk_tau(m, fl, tau, tau33)
-          pk(i, :) = first_piola(fl, detf(i, g), tau)
-          we(i) = we(i) + sc(i, g)**2*svk_energy(m, fl)
-        end do
-        if (monitor) then
-          do i = 1, nc
-            fl = f(i, :, g)
-            wmod(i) = max(wmod(i), wave_modulus_svk(m, fl))
-          end do
-        end if
-      end select
-      ! fe(i, :, a) += sqrt(c) (P H^T) dN_a/dxi
-      do i = 1, nc
-        c = sc(i, g)
-        t11 = c*(pk(i, 1)*h(i, 1, g) + pk(i, 3)*h(i, 3, g))
-        t12 = c*(pk(i, 1)*h(i, 2, g) + pk(i, 3)*h(i, 4, g))
-        t21 = c*(pk(i, 2)*h(i, 1, g) + pk(i, 4)*h(i, 3, g))
-        t22 = c*(pk(i, 2)*h(i, 2, g) + pk(i, 4)*h(i, 4, g))
-        do a = 1, nen
-          fe(i, 1, a) = fe(i, 1, a) + t11*dn(1, a, g) + t12*dn(2, a, g)
-          fe(i, 2, a) = fe(i, 2, a) + t21*dn(1, a, g) + t22*dn(2, a, g)
-        end do
-      end do
-    end do points
-
-    energy = sum(we(1:nc))
-    w2 = 0.0_wp
-    if (monitor) then
-      ! omega_e^2 = (2 c / L)^2, c^2 = wmod/rho0, L = lfac (area/t0) / longest diagonal
-      do i = 1, nc
-        dx1 = diag(i, 1) + ue(i, 1, 3) - ue(i, 1, 1)
-        dy1 = diag(i, 2) + ue(i, 2, 3) - ue(i, 2, 1)
-        dx2 = diag(i, 3) + ue(i, 1, 4) - ue(i, 1, 2)
-        dy2 = diag(i, 4) + ue(i, 2, 4) - ue(i, 2, 2)
-        l2 = (lfac*abs(area(i))/thickness)**2/max(dx1*dx1 + dy1*dy1, dx2*dx2 + dy2*dy2)
-        c = 4.0_wp*wmod(i)*rinv/max(l2, tiny(1.0_wp))
-        w2 = max(w2, c)
-      end do
-    end if
-
-  end subroutine kernel_finite
+  !> St Venant-Kirchhoff (M-3) at one Gauss point of nc elements: P = F S
+  !> into pk, c W added to we, the bound (lam + 2 mu) lmax(B)^2 + max|tau|
+  !> maxed into wmod.
+  pure subroutine svk_chunk(nc, m, f, cw, pk, we, wmod)
+    integer, intent(in) :: nc
+    type(moduli_t), intent(in) :: m
+    real(wp), intent(in) :: f(fin_chunk_len, 4), cw(fin_chunk_len)
+    real(wp), intent(out) :: pk(fin_chunk_len, 4)
+    real(wp), intent(inout) :: we(fin_chunk_len), wmod(fin_chunk_len)
+    real(wp) :: f11, f21, f12, f22, e11, e22, e12, tr, s11, s22, s12, p11, p21, p12, p22
+    real(wp) :: t11, t22, t12, b11, b22, b12, bmax, mid, rad, tmax
+    integer :: i
+    do i = 1, nc
+      f11 = f(i, 1)
+      f21 = f(i, 2)
+      f12 = f(i, 3)
+      f22 = f(i, 4)
+      ! E = (F^T F - I)/2, S = lam tr E I + 2 mu E
+      e11 = 0.5_wp*(f11*f11 + f21*f21 - 1.0_wp)
+      e22 = 0.5_wp*(f12*f12 + f22*f22 - 1.0_wp)
+      e12 = 0.5_wp*(f11*f12 + f21*f22)
+      tr = m%lam*(e11 + e22)
+      s11 = tr + 2.0_wp*m%g*e11
+      s22 = tr + 2.0_wp*m%g*e22
+      s12 = 2.0_wp*m%g*e12
+      p11 = f11*s11 + f12*s12
+      p21 = f21*s11 + f22*s12
+      p12 = f11*s12 + f12*s22
+      p22 = f21*s12 + f22*s22
+      pk(i, 1) = p11
+      pk(i, 2) = p21
+      pk(i, 3) = p12
+      pk(i, 4) = p22
+      we(i) = we(i) + cw(i)*(0.5_wp*m%lam*(e11 + e22)**2 + m%g*(e11*e11 + e22*e22 + 2.0_wp*e12*e12))
+      ! bound of the wave modulus: tau = P F^T, B = F F^T
+      t11 = p11*f11 + p12*f12
+      t22 = p21*f21 + p22*f22
+      t12 = p21*f11 + p22*f12
+      b11 = f11*f11 + f12*f12
+      b22 = f21*f21 + f22*f22
+      b12 = f11*f21 + f12*f22
+      bmax = max(1.0_wp, 0.5_wp*(b11 + b22) + sqrt((0.5_wp*(b11 - b22))**2 + b12*b12))
+      mid = 0.5_wp*(t11 + t22)
+      rad = sqrt((0.5_wp*(t11 - t22))**2 + t12*t12)
+      tmax = max(abs(mid + rad), abs(mid - rad), abs(tr))
+      wmod(i) = max(wmod(i), (m%lam + 2.0_wp*m%g)*bmax*bmax + tmax)
+    end do
+  end subroutine svk_chunk
 end module raccord_finite_kernel
