@@ -1,0 +1,254 @@
+!> Contact between finite-strain bodies (issue: contact under large
+!> deformation; doc/verification.md, "Finite strain"):
+!>  - a neo-Hooke slider pressed onto a neo-Hooke base in stick (mu = 0.5),
+!>    then the whole pair turned rigidly by 90 degrees through its clamped
+!>    edges: no slip, no frictional dissipation to speak of, the contact
+!>    force turns with the bodies and the final state is the pressed state
+!>    turned (both matchings);
+!>  - the small-strain limit: the same press with finite and with small
+!>    strain differs by the order of the strain, and the difference scales
+!>    with the load.
+program test_finite_contact
+  use raccord_kinds, only: wp
+  use raccord_error, only: error_t
+  use raccord_scene, only: scene_t
+  use raccord_deck, only: read_scene
+  use raccord_mesh, only: mesh_t
+  use raccord_mesh_io, only: read_mesh
+  use raccord_model, only: model_t
+  use raccord_model_build, only: build_model
+  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
+  use raccord_state, only: state_t, init_state
+  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
+  use raccord_scene_runner, only: scene_run_t, run_deck
+  use raccord_check, only: failure_t, new_test, run_tests, check
+  use raccord_strings, only: str
+  implicit none
+
+  real(wp), parameter :: pi = acos(-1.0_wp)
+  real(wp), parameter :: delta = 0.004_wp             !< press of the slider top (mm)
+  real(wp), parameter :: t_press = 2.0e-5_wp, t_turn0 = 3.0e-5_wp, t_turn1 = 8.0e-5_wp, t_end = 1.3e-4_wp
+
+  call run_tests('finite_contact', [ &
+    new_test('stick under a 90 degree rigid turn, mortar', test_turn_mortar), &
+    new_test('stick under a 90 degree rigid turn, node-to-segment', test_turn_nts), &
+    new_test('small-strain limit of a press', test_small_limit)])
+
+contains
+
+  !> The slide deck of input/verification/sliding with both bodies finite
+  !> strain neo-Hooke, both clamped edges held (the test drives them).
+  function turn_deck(method, material) result(path)
+    character(len=*), intent(in) :: method, material
+    character(len=:), allocatable :: path
+    character(len=512) :: root
+    integer :: u, length, stat
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    path = './turn_' // method // '.nml'
+    open(newunit=u, file=path, status='replace', action='write')
+    write(u, '(a)') '&mesh file = ''' // trim(root) // '/input/verification/sliding/sliding_q4.msh'' /'
+    write(u, '(a)') '&body name = ''base'', elset = ''base'', young = 20000.0, poisson = 0.3, density = 1.0e-9,'
+    write(u, '(a)') '  kinematics = ''finite'', material = ''' // material // ''' /'
+    write(u, '(a)') '&body name = ''slider'', elset = ''slider'', young = 20000.0, poisson = 0.3, density = 1.0e-9,'
+    write(u, '(a)') '  kinematics = ''finite'', material = ''' // material // ''' /'
+    write(u, '(a)') '&boundary set = ''base_bottom'', type = ''fixed'', components = ''xy'' /'
+    write(u, '(a)') '&boundary set = ''slider_top'', type = ''fixed'', components = ''xy'' /'
+    write(u, '(a)') '&time t_end = 1.3e-4, damping = 3.0e5 /'
+    write(u, '(a)') '&contact_pair slave = ''slider_bottom'', master = ''base_top'', friction = 0.5,'
+    write(u, '(a)') '  method = ''' // method // ''' /'
+    close(u)
+  end function turn_deck
+
+  !> Turn angle at t: 0 before t_turn0, 90 degrees after t_turn1, a
+  !> smooth (1 - cos)/2 profile between.
+  pure real(wp) function angle(t)
+    real(wp), intent(in) :: t
+    real(wp) :: s
+    s = min(1.0_wp, max(0.0_wp, (t - t_turn0)/(t_turn1 - t_turn0)))
+    angle = 0.25_wp*pi*(1.0_wp - cos(pi*s))
+  end function angle
+
+  !> Position the test prescribes at t for a clamped node at X: the slider
+  !> top pressed down by delta (ramped over t_press), then everything turned
+  !> about the origin (the middle of the interface).
+  pure function prescribed(x, top, t) result(p)
+    real(wp), intent(in) :: x(2), t
+    logical, intent(in) :: top
+    real(wp) :: p(2), q(2), th
+    q = x
+    if (top) q(2) = q(2) - delta*min(1.0_wp, t/t_press)
+    th = angle(t)
+    p = [cos(th)*q(1) - sin(th)*q(2), sin(th)*q(1) + cos(th)*q(2)]
+  end function prescribed
+
+  !> The time loop of the program, with the clamped edges driven by the
+  !> test: after the predictor, the constrained dofs are set to the
+  !> prescribed positions at t(n+1) (v consistent), before contact.
+  subroutine run_turn(method, failure, u_press, u_end, f_press, f_end, friction, stored, steps)
+    character(len=*), intent(in) :: method
+    type(failure_t), allocatable, intent(inout) :: failure
+    real(wp), allocatable, intent(out) :: u_press(:,:), u_end(:,:)
+    real(wp), intent(out) :: f_press(2), f_end(2), friction, stored
+    integer, intent(out) :: steps
+    type(scene_t) :: scene
+    type(mesh_t) :: mesh
+    type(model_t) :: model
+    type(time_plan_t) :: plan
+    type(state_t) :: state
+    type(contact_pair_t), allocatable :: pairs(:)
+    type(error_t) :: err
+    integer :: j, i, c, top_support
+    real(wp) :: tn, p(2)
+    call read_scene(turn_deck(method, 'neo_hooke'), scene, err)
+    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
+    if (.not. err%failed()) call build_model(scene, mesh, model, err)
+    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
+    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
+    if (allocated(failure)) return
+    top_support = 0
+    do j = 1, size(model%supports)
+      if (model%supports(j)%set == 'slider_top') top_support = j
+    end do
+    call init_state(model, plan%dt, plan%nsteps, state)
+    state%t_end = plan%t_end
+    state%safety = scene%time%safety
+    do
+      call compute_forces(model, state)
+      call check_deformation(model, state, err)
+      if (.not. err%failed()) call adapt_time_step(model, state, err)
+      if (err%failed()) call check(failure, .false., err%message)
+      if (allocated(failure)) return
+      call predict_motion(model, state)
+      tn = state%time + state%dt
+      do j = 1, model%ncdof
+        i = model%cdof_node(j)
+        c = model%cdof_comp(j)
+        p = prescribed(model%x(:, i), model%cdof_support(j) == top_support, tn)
+        state%u_next(c, i) = p(c) - model%x(c, i)
+        state%v(c, i) = (state%u_next(c, i) - state%u(c, i))/state%dt
+      end do
+      call enforce_contact(pairs, model, state, err)
+      if (err%failed()) call check(failure, .false., 'contact: ' // err%message)
+      if (allocated(failure)) return
+      call update_energy(model, state)
+      if (state%time <= t_turn0 .and. state%time + state%dt > t_turn0) then
+        u_press = state%u
+        f_press = pairs(1)%force
+        stored = state%energy%internal
+      end if
+      if (state%step == state%nsteps) exit
+      call advance_state(state)
+    end do
+    u_end = state%u
+    f_end = pairs(1)%force
+    friction = state%energy%friction
+    steps = int(state%step)
+    ! the pressed state turned by 90 degrees, as displacements
+    do i = 1, model%nnode
+      p = model%x(:, i) + u_press(:, i)
+      u_press(:, i) = [-p(2), p(1)] - model%x(:, i)
+    end do
+  end subroutine run_turn
+
+  subroutine check_turn(method, failure)
+    character(len=*), intent(in) :: method
+    type(failure_t), allocatable, intent(inout) :: failure
+    real(wp), allocatable :: u_turned(:,:), u_end(:,:)
+    real(wp) :: f_press(2), f_end(2), friction, stored, diff, fturn(2)
+    integer :: steps
+    call run_turn(method, failure, u_turned, u_end, f_press, f_end, friction, stored, steps)
+    if (allocated(failure)) return
+    diff = maxval(abs(u_end - u_turned))
+    fturn = [-f_press(2), f_press(1)]
+    print '(a)', '  ' // method // ': pressed contact force (' // str(f_press(1), 4) // ', ' // str(f_press(2), 4) // &
+      '), after the turn (' // str(f_end(1), 4) // ', ' // str(f_end(2), 4) // '); final state - turned ' // &
+      'pressed state: ' // str(diff/delta, 3) // ' of the press; friction work ' // str(friction, 3) // &
+      ' against ' // str(stored, 3) // ' of energy stored by the press; ' // str(steps) // ' steps'
+    call check(failure, norm2(f_press) > 10.0_wp, method // ': no contact force after the press')
+    call check(failure, norm2(f_end - fturn) < 1.0e-3_wp*norm2(f_press), method // &
+      ': the contact force did not turn with the bodies')
+    call check(failure, diff < 1.0e-3_wp*delta, method // ': the final state differs from the turned pressed ' // &
+      'state by ' // str(diff) // ' (stick crept)')
+    call check(failure, abs(friction) < 1.0e-6_wp*stored, method // ': friction dissipated ' // &
+      str(friction) // ' in stick')
+  end subroutine check_turn
+
+  subroutine test_turn_mortar(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_turn('mortar', failure)
+  end subroutine test_turn_mortar
+
+  subroutine test_turn_nts(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_turn('node_to_segment', failure)
+  end subroutine test_turn_nts
+
+  !> The slider pressed by a pressure p onto the base (mortar, frictionless)
+  !> with finite and with small strain: the relative difference of the
+  !> slider's settlement is of the order of the strain, and falls 10x when
+  !> the load does.
+  subroutine test_small_limit(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp) :: d(2), strain(2)
+    integer :: k
+    real(wp), parameter :: loads(2) = [200.0_wp, 20.0_wp]
+    do k = 1, 2
+      d(k) = relative_difference(loads(k), strain(k), failure)
+      if (allocated(failure)) return
+      print '(a)', '  pressure ' // str(loads(k), 3) // ': strain ' // str(strain(k), 3) // &
+        ', finite vs small settlement differs by ' // str(d(k), 3)
+    end do
+    call check(failure, d(1) < 3.0_wp*strain(1), 'difference ' // str(d(1)) // ' not of the order of the strain ' // &
+      str(strain(1)))
+    call check(failure, d(2) < 0.2_wp*d(1) .and. d(2) > 0.05_wp*d(1), 'difference does not scale with the load: ' // &
+      str(d(1)) // ', ' // str(d(2)))
+  end subroutine test_small_limit
+
+  !> |settlement(finite) - settlement(small)| / settlement(small) of the
+  !> slider top's middle under pressure p; strain = settlement / height.
+  real(wp) function relative_difference(p, strain, failure) result(d)
+    real(wp), intent(in) :: p
+    real(wp), intent(out) :: strain
+    type(failure_t), allocatable, intent(inout) :: failure
+    type(scene_run_t), allocatable :: run
+    type(error_t) :: err
+    real(wp) :: s(2)
+    integer :: k, n, u
+    character(len=512) :: root
+    character(len=32) :: pv
+    integer :: length, stat
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    write(pv, '(es12.5)') p
+    d = 0.0_wp
+    strain = 0.0_wp
+    do k = 1, 2
+      open(newunit=u, file='press.nml', status='replace', action='write')
+      write(u, '(a)') '&mesh file = ''' // trim(root) // '/input/verification/sliding/sliding_q4.msh'' /'
+      write(u, '(a)') '&body name = ''base'', elset = ''base'', young = 20000.0, poisson = 0.3, density = 1.0e-9 /'
+      if (k == 1) then
+        write(u, '(a)') '&body name = ''slider'', elset = ''slider'', young = 20000.0, poisson = 0.3, ' // &
+          'density = 1.0e-9, kinematics = ''finite'', material = ''neo_hooke'' /'
+      else
+        write(u, '(a)') '&body name = ''slider'', elset = ''slider'', young = 20000.0, poisson = 0.3, density = 1.0e-9 /'
+      end if
+      write(u, '(a)') '&amplitude name = ''press'', time = 0.0, 2.0e-5, value = 0.0, 1.0 /'
+      write(u, '(a)') '&boundary set = ''base_bottom'', type = ''fixed'', components = ''xy'' /'
+      write(u, '(a)') '&boundary set = ''slider_top'', type = ''pressure'', pressure = ' // trim(pv) // &
+        ', amplitude = ''press'' /'
+      write(u, '(a)') '&time t_end = 6.0e-5, damping = 1.0e6 /'
+      write(u, '(a)') '&contact_pair slave = ''slider_bottom'', master = ''base_top'', method = ''mortar'' /'
+      close(u)
+      allocate(run)
+      call run_deck('./press.nml', run, err)
+      if (err%failed()) call check(failure, .false., 'press run: ' // err%message)
+      if (allocated(failure)) return
+      n = minloc(run%model%x(1, :)**2 + (run%model%x(2, :) - 0.5_wp)**2, 1)
+      s(k) = -run%state%u(2, n)
+      deallocate(run)
+    end do
+    d = abs(s(1) - s(2))/abs(s(2))
+    strain = s(2)/0.5_wp
+  end function relative_difference
+end program test_finite_contact
