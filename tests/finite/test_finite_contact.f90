@@ -28,12 +28,14 @@ program test_finite_contact
 
   real(wp), parameter :: pi = acos(-1.0_wp)
   real(wp), parameter :: delta = 0.004_wp             !< press of the slider top (mm)
-  real(wp), parameter :: t_press = 2.0e-5_wp, t_turn0 = 3.0e-5_wp, t_turn1 = 8.0e-5_wp, t_end = 1.3e-4_wp
+  real(wp), parameter :: t_press = 2.0e-5_wp, t_turn0 = 3.0e-5_wp, t_turn1 = 8.0e-5_wp
 
   call run_tests('finite_contact', [ &
     new_test('stick under a 90 degree rigid turn, mortar', test_turn_mortar), &
     new_test('stick under a 90 degree rigid turn, node-to-segment', test_turn_nts), &
-    new_test('small-strain limit of a press', test_small_limit)])
+    new_test('small-strain limit of a press', test_small_limit), &
+    new_test('dragged over many master segments, mortar', test_drag_mortar), &
+    new_test('dragged over many master segments, node-to-segment', test_drag_nts)])
 
 contains
 
@@ -251,4 +253,115 @@ contains
     d = abs(s(1) - s(2))/abs(s(2))
     strain = s(2)/0.5_wp
   end function relative_difference
+
+  !> A soft neo-Hooke slider (finite strain) pressed onto a steel base
+  !> (small strain) by its top, then dragged 1.5 mm along it, across 30 of
+  !> the base's 0.05 mm segments, mu = 0.3. Returns the mean and the largest
+  !> |T|/N over the sliding window, the worst energy balance and the
+  !> slider's travel. (The soft slider stick-slips: 1 to 6 of its 14 contact
+  !> nodes stick at any time and the mean |T|/N is about 0.2, with small
+  !> strain as with finite strain; doc/verification.md, "Finite strain".)
+  subroutine run_drag(method, failure, ratio_mean, ratio_max, balance, travel)
+    character(len=*), intent(in) :: method
+    type(failure_t), allocatable, intent(inout) :: failure
+    real(wp), intent(out) :: ratio_mean, ratio_max, balance, travel
+    type(scene_t) :: scene
+    type(mesh_t) :: mesh
+    type(model_t) :: model
+    type(time_plan_t) :: plan
+    type(state_t) :: state
+    type(contact_pair_t), allocatable :: pairs(:)
+    type(error_t) :: err
+    character(len=512) :: root
+    character(len=:), allocatable :: path
+    real(wp) :: r, rmax, rsum
+    integer :: u, length, stat, nsample, n
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    path = './drag_' // method // '.nml'
+    open(newunit=u, file=path, status='replace', action='write')
+    write(u, '(a)') '&mesh file = ''' // trim(root) // '/input/verification/sliding/sliding_q4.msh'' /'
+    write(u, '(a)') '&body name = ''base'', elset = ''base'', young = 200000.0, poisson = 0.3, density = 7.8e-9 /'
+    write(u, '(a)') '&body name = ''slider'', elset = ''slider'', young = 2000.0, poisson = 0.45, density = 1.0e-9,'
+    write(u, '(a)') '  kinematics = ''finite'', material = ''neo_hooke'', damping = 3.0e6 /'
+    write(u, '(a)') '&amplitude name = ''press'', time = 0.0, 2.0e-5, value = 0.0, 1.0 /'
+    write(u, '(a)') '&amplitude name = ''drag'', time = 3.0e-5, 1.5e-4, value = 0.0, 1.0 /'
+    write(u, '(a)') '&boundary set = ''base_bottom'', type = ''fixed'', components = ''xy'' /'
+    write(u, '(a)') '&boundary set = ''slider_top'', type = ''displacement'', components = ''y'', ' // &
+      'value = 0.0, -0.02, amplitude = ''press'' /'
+    write(u, '(a)') '&boundary set = ''slider_top'', type = ''displacement'', components = ''x'', ' // &
+      'value = 1.5, 0.0, amplitude = ''drag'' /'
+    write(u, '(a)') '&time t_end = 1.6e-4 /'
+    write(u, '(a)') '&contact_pair slave = ''slider_bottom'', master = ''base_top'', friction = 0.3,'
+    write(u, '(a)') '  method = ''' // method // ''' /'
+    close(u)
+    call read_scene(path, scene, err)
+    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
+    if (.not. err%failed()) call build_model(scene, mesh, model, err)
+    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
+    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
+    if (allocated(failure)) return
+    call init_state(model, plan%dt, plan%nsteps, state)
+    state%t_end = plan%t_end
+    state%safety = scene%time%safety
+    rmax = -huge(1.0_wp)
+    rsum = 0.0_wp
+    nsample = 0
+    balance = 0.0_wp
+    do
+      call compute_forces(model, state)
+      call check_deformation(model, state, err)
+      if (.not. err%failed()) call adapt_time_step(model, state, err)
+      if (err%failed()) call check(failure, .false., err%message)
+      if (allocated(failure)) return
+      call predict_motion(model, state)
+      call enforce_contact(pairs, model, state, err)
+      if (err%failed()) call check(failure, .false., 'contact: ' // err%message)
+      if (allocated(failure)) return
+      call update_energy(model, state)
+      if (state%energy%scale > 0.0_wp) balance = max(balance, abs(state%energy%balance)/state%energy%scale)
+      ! steady sliding: the drag velocity is constant on [3e-5, 1.5e-4]
+      if (state%time > 5.0e-5_wp .and. state%time < 1.45e-4_wp) then
+        r = abs(pairs(1)%tangent_sum)/max(abs(pairs(1)%normal_sum), tiny(1.0_wp))
+        rmax = max(rmax, r)
+        rsum = rsum + r
+        nsample = nsample + 1
+      end if
+      if (state%step == state%nsteps) exit
+      call advance_state(state)
+    end do
+    ratio_mean = rsum/real(max(nsample, 1), wp)
+    ratio_max = rmax
+    n = minloc(model%x(1, :)**2 + (model%x(2, :) - 0.0_wp)**2 + merge(0.0_wp, 1.0e9_wp, model%node_body == 2), 1)
+    travel = state%u(1, n)
+  end subroutine run_drag
+
+  !> What holds while the soft slider is dragged: it travels the whole way
+  !> (across 30 master segments), the Coulomb bound |T| <= mu N is never
+  !> exceeded, friction carries a good part of mu N on average, and the
+  !> energy balance stays small.
+  subroutine check_drag(method, failure)
+    character(len=*), intent(in) :: method
+    type(failure_t), allocatable, intent(inout) :: failure
+    real(wp) :: ratio_mean, ratio_max, balance, travel
+    call run_drag(method, failure, ratio_mean, ratio_max, balance, travel)
+    if (allocated(failure)) return
+    print '(a)', '  ' // method // ': sliding |T|/N mean ' // str(ratio_mean, 4) // ', largest ' // &
+      str(ratio_max, 8) // ' (mu = 0.3); slider travel ' // str(travel, 4) // ' mm; worst energy balance ' // &
+      str(balance, 3)
+    call check(failure, travel > 1.4_wp, method // ': the slider travelled ' // str(travel) // ' mm only')
+    call check(failure, ratio_max <= 0.3_wp*(1.0_wp + 1.0e-9_wp), method // ': |T|/N reached ' // str(ratio_max))
+    call check(failure, ratio_mean > 0.15_wp, method // ': mean |T|/N ' // str(ratio_mean))
+    call check(failure, balance < 1.0e-2_wp, method // ': energy balance ' // str(balance))
+  end subroutine check_drag
+
+  subroutine test_drag_mortar(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_drag('mortar', failure)
+  end subroutine test_drag_mortar
+
+  subroutine test_drag_nts(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_drag('node_to_segment', failure)
+  end subroutine test_drag_nts
 end program test_finite_contact
