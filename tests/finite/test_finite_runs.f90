@@ -9,6 +9,15 @@ program test_finite_runs
   use raccord_material, only: moduli_t, make_moduli
   use raccord_elastic_block, only: add_nodal_stress
   use raccord_scene_runner, only: scene_run_t, run_deck
+  use raccord_scene, only: scene_t
+  use raccord_deck, only: read_scene
+  use raccord_mesh, only: mesh_t
+  use raccord_mesh_io, only: read_mesh
+  use raccord_model, only: model_t
+  use raccord_model_build, only: build_model
+  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
+  use raccord_state, only: state_t, init_state
+  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
   use raccord_strings, only: str
   implicit none
@@ -21,7 +30,8 @@ program test_finite_runs
     new_test('SVK Q4 confined stretch to 200 %', test_svk_q4_stretch), &
     new_test('SVK Q8 confined compression by 20 %', test_svk_q8_compression), &
     new_test('energy balance error falls as dt^2', test_balance_order), &
-    new_test('inverted element stops the run (exit 3)', test_inversion)])
+    new_test('inverted element stops the run (exit 3)', test_inversion), &
+    new_test('a spinning body keeps its energy and no spurious stress', test_spin)])
 
 contains
 
@@ -179,4 +189,93 @@ contains
       index(err%message, 't = ') > 0, 'message: ' // err%message)
     print '(a)', '  ' // err%message
   end subroutine test_inversion
+
+  !> A free unit block spinning at omega about its centre for a quarter
+  !> turn (Q4 mean dilatation and Q8): it turns as a rigid body, its stress
+  !> stays at the level of the centrifugal one, rho omega^2 R^2 (1e-5 of E
+  !> here), and kinetic + stored energy stay constant. A small-strain body
+  !> would carry a stress of the order of E after 90 degrees.
+  subroutine test_spin(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call spin(failure, 'block.msh')
+    if (allocated(failure)) return
+    call spin(failure, 'block_q8.msh')
+  end subroutine test_spin
+
+  subroutine spin(failure, mesh_file)
+    type(failure_t), allocatable, intent(inout) :: failure
+    character(len=*), intent(in) :: mesh_file
+    type(scene_t) :: scene
+    type(mesh_t) :: mesh
+    type(model_t) :: model
+    type(time_plan_t) :: plan
+    type(state_t) :: state
+    type(error_t) :: err
+    character(len=512) :: root
+    real(wp), allocatable :: s(:,:), wsum(:), r0(:,:)
+    real(wp), parameter :: rho = 1.0e-9_wp, pi = acos(-1.0_wp)
+    real(wp) :: omega, e0, worst_e, smax, scent, pos_err, turned(2)
+    integer :: u, length, stat, i, k
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    ! rho omega^2 R^2 = 1e-5 E with R^2 = 1/2 (the corner's distance to the centre)
+    omega = sqrt(1.0e-5_wp*young/(rho*0.5_wp))
+    open(newunit=u, file='spin.nml', status='replace', action='write')
+    write(u, '(a)') '&mesh file = ''' // trim(root) // '/tests/finite/data/' // mesh_file // ''' /'
+    write(u, '(a)') '&body name = ''block'', young = 7000.0, poisson = 0.3, density = 1.0e-9,'
+    write(u, '(a)') '  kinematics = ''finite'', material = ''neo_hooke'' /'
+    write(u, '(a, es23.15, a)') '&time t_end = ', 0.5_wp*pi/omega, ' /'
+    close(u)
+    call read_scene('spin.nml', scene, err)
+    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
+    if (.not. err%failed()) call build_model(scene, mesh, model, err)
+    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
+    if (allocated(failure)) return
+    ! rigid spin about (0.5, 0.5): v = omega e_z x (X - c)
+    allocate(r0(2, model%nnode))
+    r0(1, :) = model%x(1, :) - 0.5_wp
+    r0(2, :) = model%x(2, :) - 0.5_wp
+    model%v0(1, :) = -omega*r0(2, :)
+    model%v0(2, :) = omega*r0(1, :)
+    call init_state(model, plan%dt, plan%nsteps, state)
+    state%t_end = plan%t_end
+    state%safety = scene%time%safety
+    e0 = 0.0_wp
+    worst_e = 0.0_wp
+    do
+      call compute_forces(model, state)
+      call check_deformation(model, state, err)
+      if (.not. err%failed()) call adapt_time_step(model, state, err)
+      if (err%failed()) call check(failure, .false., err%message)
+      if (allocated(failure)) return
+      call predict_motion(model, state)
+      call update_energy(model, state)
+      if (state%step == 0) e0 = state%energy%kinetic
+      worst_e = max(worst_e, abs(state%energy%kinetic + state%energy%internal - e0))
+      if (state%step == state%nsteps) exit
+      call advance_state(state)
+    end do
+    ! after a quarter turn every node is where the turned body puts it
+    pos_err = 0.0_wp
+    do i = 1, model%nnode
+      turned = [0.5_wp - r0(2, i), 0.5_wp + r0(1, i)]
+      pos_err = max(pos_err, norm2(model%x(:, i) + state%u(:, i) - turned))
+    end do
+    allocate(s(4, model%nnode), wsum(model%nnode), source=0.0_wp)
+    do k = 1, size(model%bodies(1)%blocks)
+      call add_nodal_stress(model%bodies(1)%blocks(k), state%u, s, wsum)
+    end do
+    smax = 0.0_wp
+    do i = 1, model%nnode
+      if (wsum(i) > 0.0_wp) smax = max(smax, maxval(abs(s(:, i)/wsum(i))))
+    end do
+    scent = rho*omega**2*0.5_wp
+    print '(a)', '  ' // mesh_file // ': quarter turn in ' // str(state%step) // ' steps; largest stress ' // &
+      str(smax/scent, 3) // ' x rho omega^2 R^2 (' // str(smax/young, 3) // ' of E); kinetic + stored energy ' // &
+      'drift ' // str(worst_e/e0, 3) // ' of the kinetic; position off the rigid turn by ' // str(pos_err, 3)
+    call check(failure, smax < 3.0_wp*scent, mesh_file // ': stress ' // str(smax) // ' beyond the centrifugal ' // &
+      'level ' // str(scent))
+    call check(failure, worst_e < 1.0e-4_wp*e0, mesh_file // ': energy drifts by ' // str(worst_e/e0) // ' of e0')
+    call check(failure, pos_err < 1.0e-3_wp, mesh_file // ': the body did not turn rigidly: ' // str(pos_err))
+  end subroutine spin
 end program test_finite_runs
