@@ -35,7 +35,8 @@ program test_finite_contact
     new_test('stick under a 90 degree rigid turn, node-to-segment', test_turn_nts), &
     new_test('small-strain limit of a press', test_small_limit), &
     new_test('dragged over many master segments, mortar', test_drag_mortar), &
-    new_test('dragged over many master segments, node-to-segment', test_drag_nts)])
+    new_test('dragged over many master segments, node-to-segment', test_drag_nts), &
+    new_test('high-speed impact of a neo-Hooke block', test_impact)])
 
 contains
 
@@ -364,4 +365,59 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call check_drag('node_to_segment', failure)
   end subroutine test_drag_nts
+
+  !> A neo-Hooke block (E 2000, nu 0.45) hitting a steel base at 0.1 and
+  !> 0.3 of its wave speed (nominal strains of 10 % and 30 %), both
+  !> matchings: the run completes, no energy comes from the contact
+  !> (contact work >= -1e-6 of the initial kinetic energy), the balance
+  !> stays small, the block bounces off (upward momentum at the end) and
+  !> kinetic + stored energy never exceed the initial kinetic energy.
+  subroutine test_impact(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(scene_run_t), allocatable :: run
+    type(error_t) :: err
+    character(len=512) :: root
+    character(len=32) :: vtext
+    character(len=16), parameter :: methods(2) = [character(len=16) :: 'mortar', 'node_to_segment']
+    real(wp), parameter :: c = 2.75e6_wp
+    real(wp) :: v, e0, vy
+    integer :: u, length, stat, k, im, n
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    do im = 1, 2
+      do k = 1, 2
+        v = merge(0.1_wp, 0.3_wp, k == 1)*c
+        write(vtext, '(es12.5)') -v
+        open(newunit=u, file='impact.nml', status='replace', action='write')
+        write(u, '(a)') '&mesh file = ''' // trim(root) // '/input/verification/sliding/sliding_q4.msh'' /'
+        write(u, '(a)') '&body name = ''base'', elset = ''base'', young = 200000.0, poisson = 0.3, density = 7.8e-9 /'
+        write(u, '(a)') '&body name = ''slider'', elset = ''slider'', young = 2000.0, poisson = 0.45, ' // &
+          'density = 1.0e-9, kinematics = ''finite'', material = ''neo_hooke'', velocity = 0.0, ' // trim(vtext) // ' /'
+        write(u, '(a)') '&boundary set = ''base_bottom'', type = ''fixed'', components = ''xy'' /'
+        write(u, '(a)') '&time t_end = 1.0e-6 /'
+        write(u, '(a)') '&contact_pair slave = ''slider_bottom'', master = ''base_top'', friction = 0.2, ' // &
+          'method = ''' // trim(methods(im)) // ''' /'
+        close(u)
+        allocate(run)
+        call run_deck('./impact.nml', run, err)
+        if (err%failed()) call check(failure, .false., trim(methods(im)) // ' impact: ' // err%message)
+        if (allocated(failure)) return
+        e0 = run%state%energy%initial
+        vy = 0.0_wp
+        do n = 1, run%model%nnode
+          if (run%model%node_body(n) == 2) vy = vy + run%model%mass(n)*run%state%v_mid(2, n)
+        end do
+        print '(a)', '  ' // trim(methods(im)) // ', impact at ' // str(v/c, 2) // ' c: ' // str(run%state%step) // &
+          ' steps, worst balance ' // str(run%worst_balance, 3) // ', least contact work ' // &
+          str(run%min_contact_work/e0, 3) // ' of KE0, largest KE + W ' // str(run%max_internal/e0, 4) // &
+          ' (internal) ; final momentum ' // str(vy, 3)
+        call check(failure, run%min_contact_work > -1.0e-6_wp*e0, trim(methods(im)) // ': contact gave energy ' // &
+          str(run%min_contact_work))
+        call check(failure, run%worst_balance < 1.0e-2_wp, trim(methods(im)) // ': balance ' // str(run%worst_balance))
+        call check(failure, vy > 0.0_wp, trim(methods(im)) // ': the block did not bounce off')
+        call check(failure, run%state%energy%kinetic + run%state%energy%internal <= e0*(1.0_wp + 1.0e-3_wp), &
+          trim(methods(im)) // ': energy grew')
+        deallocate(run)
+      end do
+    end do
+  end subroutine test_impact
 end program test_finite_contact
