@@ -14,10 +14,11 @@ module raccord_output
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
     results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
-    results_delete, results_flush
+    results_delete, results_flush, results_add_surface, results_write_surface_frame
   use raccord_history_file, only: history_file_t, history_open, history_write, history_close, history_bytes, &
     history_suspend, history_resume
   use raccord_contact_pair, only: contact_pair_t
+  use raccord_contact_surface, only: contact_surface_t
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file, file_size, truncate_file
@@ -26,6 +27,12 @@ module raccord_output
   private
 
   integer, parameter :: col_len = 40
+
+  !> Per-node values of a contact pair's slave surface grid in the results
+  !> (doc/output-format.md, "Contact surfaces"), in the columns of
+  !> write_contact_frame's values array.
+  character(len=*), parameter :: SURFACE_FIELDS(7) = [character(len=14) :: 'pressure', 'shear', 'gap', &
+    'slip_increment', 'status', 'lambda_n', 'lambda_t']
 
   type, public :: output_t
     character(len=:), allocatable :: stem
@@ -83,6 +90,8 @@ contains
       call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
       if (err%failed()) return
     end do
+    call add_contact_surfaces(out, pairs, err)
+    if (err%failed()) return
     call keep_resolved_scene(scene, stem, out%res, err)
     if (err%failed()) return
     call history_open(out%hist, stem // '.history.txt', out%columns, err)
@@ -243,6 +252,8 @@ contains
     call results_resume(out%res, stem, model%nnode, result_blocks(model), fields, ncomps, mark%frames_written, err)
     if (err%failed()) return
     out%is_open = .true.
+    call add_contact_surfaces(out, pairs, err)
+    if (err%failed()) return
     do k = 1, size(pairs)
       n = mark%frames_written
       do
@@ -274,6 +285,43 @@ contains
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
   end subroutine resume_outputs
+
+  !> Each pair's slave surface (with the contact values) and master
+  !> surface (coordinates only) as surface grids of the results, named
+  !> contact<k>_<surface>.
+  subroutine add_contact_surfaces(out, pairs, err)
+    type(output_t), intent(inout) :: out
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(error_t), intent(inout) :: err
+    character(len=0), parameter :: none(0) = [character(len=0) ::]
+    integer :: k
+    do k = 1, size(pairs)
+      associate (sl => pairs(k)%slave, ma => pairs(k)%master)
+        call results_add_surface(out%res, 'contact' // str(k) // '_' // sl%name, '/contact/pair_' // str(k), '', &
+          surface_segments(sl), sl%nnode, SURFACE_FIELDS, err)
+        call results_add_surface(out%res, 'contact' // str(k) // '_' // ma%name, '/contact/pair_' // str(k), &
+          'master_', surface_segments(ma), ma%nnode, none, err)
+      end associate
+      if (err%failed()) return
+    end do
+  end subroutine add_contact_surfaces
+
+  !> Segments of a surface as indices into its node list (ends, then the
+  !> middle node of a quadratic edge).
+  function surface_segments(surf) result(conn)
+    type(contact_surface_t), intent(in) :: surf
+    integer, allocatable :: conn(:,:)
+    integer :: i, j, k
+    allocate(conn(surf%nen_seg, surf%nseg))
+    do k = 1, surf%nseg
+      do j = 1, surf%nen_seg
+        conn(j, k) = 0
+        do i = 1, surf%nnode
+          if (surf%node(i) == surf%seg(j, k)) conn(j, k) = i
+        end do
+      end do
+    end do
+  end function surface_segments
 
   !> The resolved scene (every key with its final value) beside the
   !> results as <stem>.scene.nml, and as text in the HDF5 file (/scene, with
@@ -475,17 +523,18 @@ contains
       call results_write_nodal(out%res, 'stress', out%s_node, err)
       if (err%failed()) return
     end if
-    call results_end_frame(out%res, err)
-    if (err%failed()) return
     do k = 1, size(pairs)
       call write_contact_frame(out, k, pairs(k), model, state, err)
       if (err%failed()) return
     end do
+    call results_end_frame(out%res, err)
+    if (err%failed()) return
     out%frames_written = out%frames_written + 1
   end subroutine write_frame
 
   !> Contact profile of pair k at this frame: HDF5 arrays under
-  !> /contact/pair_<k>/frame_<n>/ and a block of the text profile.
+  !> /contact/pair_<k>/frame_<n>/ (the slave and master surface grids, and
+  !> s0 and the pair's force) and a block of the text profile.
   subroutine write_contact_frame(out, k, pair, model, state, err)
     type(output_t), intent(inout) :: out
     integer, intent(in) :: k
@@ -495,23 +544,33 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: base
     character(len=16) :: tag
-    real(wp), allocatable :: xy(:,:), gap(:)
+    real(wp), allocatable :: xy(:,:), values(:,:), xm(:,:), no_values(:,:)
     integer :: i, p, ios
     write(tag, '(i6.6)') out%frames_written
     base = '/contact/pair_' // str(k) // '/frame_' // trim(tag) // '/'
-    allocate(xy(2, pair%slave%nnode), gap(pair%slave%nnode))
+    allocate(xy(2, pair%slave%nnode), xm(2, pair%master%nnode), values(pair%slave%nnode, size(SURFACE_FIELDS)), &
+      no_values(pair%master%nnode, 0))
     do i = 1, pair%slave%nnode
       p = pair%slave%node(i)
       xy(:, i) = model%x(:, p) + state%u(:, p)
     end do
-    gap = merge(pair%gap, 0.0_wp, pair%status /= ST_OPEN)
+    do i = 1, pair%master%nnode
+      p = pair%master%node(i)
+      xm(:, i) = model%x(:, p) + state%u(:, p)
+    end do
+    ! Columns in the order of SURFACE_FIELDS; the gap of an open node is
+    ! written as 0 (as in the text profile: it is not computed there).
+    values(:, 1) = pair%pressure
+    values(:, 2) = pair%shear
+    values(:, 3) = merge(pair%gap, 0.0_wp, pair%status /= ST_OPEN)
+    values(:, 4) = pair%slip
+    values(:, 5) = real(pair%status, wp)
+    values(:, 6) = pair%lam_n
+    values(:, 7) = pair%lam_t
     call results_write_array(out%res, base // 's0', pair%slave%s0, err)
-    call results_write_array(out%res, base // 'xy', xy, err)
-    call results_write_array(out%res, base // 'pressure', pair%pressure, err)
-    call results_write_array(out%res, base // 'shear', pair%shear, err)
-    call results_write_array(out%res, base // 'status', real(pair%status, wp), err)
-    call results_write_array(out%res, base // 'slip_increment', pair%slip, err)
     call results_write_array(out%res, base // 'force', pair%force, err)
+    call results_write_surface_frame(out%res, 2*k - 1, xy, values, err)
+    call results_write_surface_frame(out%res, 2*k, xm, no_values, err)
     if (err%failed()) return
     write(out%profile_unit(k), '(a,i0,a,es24.16,a,i0)', iostat=ios) '# frame ', out%frames_written, '  time ', &
       state%time, '  step ', state%step
