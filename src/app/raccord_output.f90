@@ -49,6 +49,7 @@ module raccord_output
     integer :: nrow = 0
     real(wp), allocatable :: s_node(:,:), wsum(:), r_node(:,:)   !< frame scratch, sized once
     integer(i8) :: clock_start = 0, clock_rate = 1, clock_last = 0
+    integer(i8) :: first_step = -1              !< first step of this process (a restart's is > 0)
     real(wp) :: progress_seconds = 10.0_wp
     integer, allocatable :: profile_unit(:)     !< per contact pair: text profiles, one block per frame
     character(len=:), allocatable :: profile_path
@@ -432,6 +433,7 @@ contains
     integer(i8) :: now
 
     last = state%step == state%nsteps
+    if (out%first_step < 0) out%first_step = state%step
     if (mod(state%step, out%history_every) == 0 .or. last) then
       call fill_history_row(out, model, state, pairs)
       call history_write(out%hist, out%row, err)
@@ -590,8 +592,11 @@ contains
     character(len=160) :: line
     elapsed = wall_seconds(out)
     frac = real(state%step, wp)/real(max(1_i8, state%nsteps), wp)
+    ! The rate of this process only: after a restart, the steps done
+    ! before it took no time here.
     eta = 0.0_wp
-    if (frac > 0.0_wp) eta = elapsed*(1.0_wp - frac)/frac
+    if (state%step > out%first_step) eta = elapsed*real(state%nsteps - state%step, wp)/ &
+      real(state%step - out%first_step, wp)
     write(line, '(a,i0,a,i0,a,f5.1,a,es11.4,a,a,a,es9.2)') 'step ', state%step, '/', state%nsteps, ' (', &
       100.0_wp*frac, ' %)  t = ', state%time, '  ETA ', hms(eta), '  energy balance ', &
       state%energy%balance/max(state%energy%scale, tiny(1.0_wp))

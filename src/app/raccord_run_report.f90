@@ -3,21 +3,31 @@
 !> closing summary.
 module raccord_run_report
   use raccord_kinds, only: wp, i8
-  use raccord_log, only: log_raw, log_info
+  use raccord_log, only: log_raw, log_info, log_level, log_set_level, LEVEL_ERROR
+  use raccord_error, only: error_t
   use raccord_strings, only: str
   use raccord_mesh, only: mesh_t, element_name
   use raccord_model, only: model_t
   use raccord_scene, only: scene_t
   use raccord_state, only: state_t, init_state
   use raccord_time_step, only: time_plan_t
-  use raccord_central_difference, only: compute_forces, predict_motion
+  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_elastic_block, only: add_nodal_stress
   use raccord_output, only: output_t, wall_seconds
-  use raccord_contact_pair, only: contact_pair_t
-  use raccord_scene, only: METHOD_NTS
+  use raccord_contact_pair, only: contact_pair_t, enforce_contact
+  use raccord_scene, only: METHOD_NTS, MULT_P0, MULT_P1, MULT_DUAL
   implicit none
   private
 
   public :: report_plan, report_summary, run_stem
+
+  !> Measured wall seconds of the parts of a step (measure_step_cost).
+  type :: step_cost_t
+    real(wp) :: element = 0.0_wp     !< forces, predictor, energy: per step
+    real(wp) :: contact = 0.0_wp     !< search, matching, multiplier solve: per step
+    real(wp) :: frame = 0.0_wp       !< one output frame's stress recovery
+    integer :: steps = 0             !< timed trial steps
+  end type step_cost_t
 
 contains
 
@@ -42,7 +52,8 @@ contains
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     integer :: ib, k, nq4, nq8
-    real(wp) :: per_step, c
+    real(wp) :: c
+    type(step_cost_t) :: cost
     character(len=:), allocatable :: effects
 
     if (len_trim(scene%run%title) > 0) then
@@ -91,8 +102,8 @@ contains
     do k = 1, size(pairs)
       call log_raw('contact pair ' // str(k) // ': slave ' // pairs(k)%slave%name // ' (' // &
         str(pairs(k)%slave%nnode) // ' nodes), master ' // pairs(k)%master%name // ' (' // &
-        str(pairs(k)%master%nseg) // ' segments), ' // merge('node-to-segment', 'mortar         ', &
-        pairs(k)%method == METHOD_NTS) // ', mu = ' // str(pairs(k)%mu, 4) // ', search distance ' // &
+        str(pairs(k)%master%nseg) // ' segments), ' // matching_text(pairs(k)) // ', mu = ' // &
+        str(pairs(k)%mu, 4) // ', search distance ' // &
         str(pairs(k)%reach, 4))
     end do
     if (size(pairs) == 0) then
@@ -106,11 +117,37 @@ contains
     call log_raw('time    t_end = ' // str(plan%t_end, 6) // ', stable dt = ' // str(plan%dt_stable, 6) // &
       ', dt = ' // str(plan%dt, 6) // ' (' // str(100.0_wp*plan%dt/plan%dt_stable, 3) // ' % of stable), ' // &
       str(plan%nsteps) // ' steps')
-    per_step = measure_step_seconds(model, plan)
-    call log_raw('cost    about ' // str(1.0e9_wp*per_step/real(max(1, model%nelem), wp), 3) // &
-      ' ns per element per step measured here; estimated run time ' // &
-      str(per_step*real(plan%nsteps, wp), 3) // ' s (without output)')
+    cost = measure_step_cost(model, plan, pairs)
+    associate (n => real(plan%nsteps, wp), frames => real(scene%output%frames + 1, wp))
+      call log_raw('cost    about ' // str(1.0e9_wp*cost%element/real(max(1, model%nelem), wp), 3) // &
+        ' ns per element per step and ' // str(1.0e6_wp*cost%contact, 3) // ' us of contact per step, timed ' // &
+        'here over ' // str(cost%steps) // ' trial steps; estimated run time ' // &
+        str((cost%element + cost%contact)*n + cost%frame*frames, 3) // ' s (elements ' // &
+        str(cost%element*n, 3) // ' s, contact ' // str(cost%contact*n, 3) // ' s, output ' // &
+        str(cost%frame*frames, 3) // ' s)')
+    end associate
   end subroutine report_plan
+
+  !> The matching and the multiplier space of a pair, as the plan names
+  !> them (doc/theory-contact.md, doc/theory-contact-mortar.md).
+  function matching_text(pair) result(s)
+    type(contact_pair_t), intent(in) :: pair
+    character(len=:), allocatable :: s
+    if (pair%method == METHOD_NTS) then
+      s = 'node-to-segment matching, multipliers at the slave nodes'
+      return
+    end if
+    select case (pair%multiplier)
+    case (MULT_P0)
+      s = 'mortar matching, P0 multipliers (constant per slave segment)'
+    case (MULT_P1)
+      s = 'mortar matching, P1 multipliers (linear, at the slave nodes)'
+    case (MULT_DUAL)
+      s = 'mortar matching, dual multipliers'
+    case default
+      s = 'mortar matching, multiplier space ' // str(pair%multiplier)
+    end select
+  end function matching_text
 
   function block_types(b) result(s)
     use raccord_model, only: body_t
@@ -124,25 +161,67 @@ contains
     end do
   end function block_types
 
-  !> Wall time of one step (forces + predictor) on a scratch state, the
-  !> median-free mean of a few repetitions: enough for an estimate.
-  real(wp) function measure_step_seconds(model, plan) result(sec)
+  !> Wall time per step of the real step, from a short trial run on
+  !> scratch copies of the state and the contact pairs from t = 0: the
+  !> elastic work (forces, predictor, energy) and the contact work
+  !> (search, matching, multipliers) apart; and the work of one output
+  !> frame (the nodal stress recovery; the HDF5 writes are not timed). The
+  !> first step is not timed (first touch of the scratch arrays); the trial
+  !> stops after about 0.3 s or 200 steps. Its messages (a first-step
+  !> overlap, say) are held back: the run itself reports them.
+  function measure_step_cost(model, plan, pairs) result(cost)
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(step_cost_t) :: cost
     type(state_t) :: scratch
-    integer(i8) :: t0, t1, rate
-    integer :: k, reps
+    type(contact_pair_t), allocatable :: trial(:)
+    type(error_t) :: err
+    real(wp), allocatable :: s_node(:,:), wsum(:)
+    integer(i8) :: t0, t1, t2, t3, rate, element_ticks, contact_ticks
+    integer :: k, ib, level, nstep
+    level = log_level()
+    call log_set_level(LEVEL_ERROR + 1)
     call init_state(model, plan%dt, plan%nsteps, scratch)
-    reps = max(3, min(50, int(2.0e6_wp/real(max(1, model%nelem), wp))))
-    call compute_forces(model, scratch)
+    if (model%has_body_force) scratch%f_ext = model%f_body
+    trial = pairs
+    element_ticks = 0
+    contact_ticks = 0
     call system_clock(t0, rate)
-    do k = 1, reps
+    nstep = 0
+    do k = 0, int(min(200_i8, plan%nsteps))
+      call system_clock(t0)
       call compute_forces(model, scratch)
       call predict_motion(model, scratch)
+      call system_clock(t1)
+      if (size(trial) > 0) call enforce_contact(trial, model, scratch, err)
+      if (err%failed()) exit
+      call system_clock(t2)
+      call update_energy(model, scratch)
+      call advance_state(scratch)
+      call system_clock(t3)
+      if (k == 0) cycle
+      element_ticks = element_ticks + (t1 - t0) + (t3 - t2)
+      contact_ticks = contact_ticks + (t2 - t1)
+      nstep = nstep + 1
+      if (real(element_ticks + contact_ticks, wp)/real(rate, wp) > 0.3_wp) exit
+    end do
+    cost%steps = nstep
+    cost%element = real(element_ticks, wp)/real(rate, wp)/real(max(1, nstep), wp)
+    cost%contact = real(contact_ticks, wp)/real(rate, wp)/real(max(1, nstep), wp)
+    allocate(s_node(4, model%nnode), wsum(model%nnode))
+    s_node = 0.0_wp
+    wsum = 0.0_wp
+    call system_clock(t0)
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        call add_nodal_stress(model%bodies(ib)%blocks(k), scratch%u, s_node, wsum)
+      end do
     end do
     call system_clock(t1)
-    sec = real(t1 - t0, wp)/real(rate, wp)/real(reps, wp)
-  end function measure_step_seconds
+    cost%frame = real(t1 - t0, wp)/real(rate, wp)
+    call log_set_level(level)
+  end function measure_step_cost
 
   !> Wall time, speed and the final energy balance.
   !> first_step: the step this process started from (0, or the step of
