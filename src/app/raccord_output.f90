@@ -642,7 +642,7 @@ contains
     if (e2%failed()) call raise_error(err, e2%code, e2%message)
     if (e3%failed()) call raise_error(err, e3%code, e3%message)
     if (ok) call log_raw('results: ' // out%stem // '.h5, ' // out%stem // &
-      '.xmf (ParaView), ' // out%stem // '.history.txt (gnuplot)')
+      '.xmf (ParaView), ' // out%stem // '.meshio.xmf (meshio), ' // out%stem // '.history.txt (gnuplot)')
   end subroutine close_outputs
 
   !> Close the profile files: final name when complete, *.incomplete.txt otherwise.
