@@ -334,6 +334,22 @@ plot_history)
   expect_code 2
   ;;
 
+check_contact)
+  # --check on a contact deck (EXTRA): the plan names the matching and the
+  # multiplier space without padding, and the cost line times the contact
+  # work of the real step (a positive contact share in the estimate).
+  run --check "$extra"
+  expect_code 0
+  expect_text "$work/stdout.txt" ', mortar matching, P1 multipliers (linear, at the slave nodes), mu = 0,' "the plan"
+  if grep -q 'mortar  ' "$work/stdout.txt"; then fail "blank padding after the method: $(grep 'mortar  ' "$work/stdout.txt")"
+  else pass "no blank padding in the plan"; fi
+  contact=$(awk '/^cost/ { for (i = 1; i < NF; i++) if ($i == "contact" && $(i+2) == "s,") print $(i+1) }' "$work/stdout.txt")
+  total=$(awk '/^cost/ { for (i = 1; i < NF; i++) if ($i == "time" && $(i-1) == "run") print $(i+1) }' "$work/stdout.txt")
+  if awk -v c="${contact:-0}" -v t="${total:-0}" 'BEGIN { exit !(c > 0 && t > c) }'; then
+    pass "estimate $total s includes contact $contact s"
+  else fail "cost line without a contact share: $(grep '^cost' "$work/stdout.txt")"; fi
+  ;;
+
 progress_live)
   # Progress lines reach a redirected stdout while the run goes on (stdout
   # is flushed line by line), and the log lines carry a time stamp and the
