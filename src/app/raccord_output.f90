@@ -48,6 +48,9 @@ module raccord_output
     real(wp), allocatable :: table(:,:)        !< history rows kept for the HDF5 copy
     integer :: nrow = 0
     real(wp), allocatable :: s_node(:,:), wsum(:), r_node(:,:)   !< frame scratch, sized once
+    !> Contact frame scratch, sized once for the largest surfaces: deformed
+    !> slave and master coordinates, slave values (one column per SURFACE_FIELDS).
+    real(wp), allocatable :: surf_xy(:,:), surf_xm(:,:), surf_values(:,:), surf_none(:,:)
     integer(i8) :: clock_start = 0, clock_rate = 1, clock_last = 0
     integer(i8) :: first_step = -1              !< first step of this process (a restart's is > 0)
     real(wp) :: progress_seconds = 10.0_wp
@@ -111,7 +114,7 @@ contains
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
-    integer :: nrow_max
+    integer :: nrow_max, k, ns, nm
     out%stem = stem
     out%stress = scene%output%stress
     out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
@@ -123,6 +126,13 @@ contains
     nrow_max = int(plan%nsteps/out%history_every) + 3
     allocate(out%table(size(out%columns), nrow_max))
     allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
+    ns = 0
+    nm = 0
+    do k = 1, size(pairs)
+      ns = max(ns, pairs(k)%slave%nnode)
+      nm = max(nm, pairs(k)%master%nnode)
+    end do
+    allocate(out%surf_xy(2, ns), out%surf_xm(2, nm), out%surf_values(ns, size(SURFACE_FIELDS)), out%surf_none(nm, 0))
   end subroutine prepare_outputs
 
   !> The element blocks of the results file, one per body block.
@@ -546,12 +556,12 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: base
     character(len=16) :: tag
-    real(wp), allocatable :: xy(:,:), values(:,:), xm(:,:), no_values(:,:)
-    integer :: i, p, ios
+    integer :: i, p, ios, ns, nm
     write(tag, '(i6.6)') out%frames_written
     base = '/contact/pair_' // str(k) // '/frame_' // trim(tag) // '/'
-    allocate(xy(2, pair%slave%nnode), xm(2, pair%master%nnode), values(pair%slave%nnode, size(SURFACE_FIELDS)), &
-      no_values(pair%master%nnode, 0))
+    ns = pair%slave%nnode
+    nm = pair%master%nnode
+    associate (xy => out%surf_xy(:, 1:ns), xm => out%surf_xm(:, 1:nm), values => out%surf_values(1:ns, :))
     do i = 1, pair%slave%nnode
       p = pair%slave%node(i)
       xy(:, i) = model%x(:, p) + state%u(:, p)
@@ -572,7 +582,7 @@ contains
     call results_write_array(out%res, base // 's0', pair%slave%s0, err)
     call results_write_array(out%res, base // 'force', pair%force, err)
     call results_write_surface_frame(out%res, 2*k - 1, xy, values, err)
-    call results_write_surface_frame(out%res, 2*k, xm, no_values, err)
+    call results_write_surface_frame(out%res, 2*k, xm, out%surf_none(1:nm, :), err)
     if (err%failed()) return
     write(out%profile_unit(k), '(a,i0,a,es24.16,a,i0)', iostat=ios) '# frame ', out%frames_written, '  time ', &
       state%time, '  step ', state%step
@@ -582,6 +592,7 @@ contains
         pair%slip(i), pair%lam_n(i), pair%lam_t(i)
     end do
     write(out%profile_unit(k), '(/)', iostat=ios)
+    end associate
     if (ios /= 0) call raise_error(err, EXIT_IO, 'cannot write ' // profile_name(out, k) // '.part')
   end subroutine write_contact_frame
 
