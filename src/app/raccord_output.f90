@@ -69,7 +69,7 @@ module raccord_output
   end type output_mark_t
 
   public :: open_outputs, write_due_outputs, close_outputs, wall_seconds
-  public :: mark_outputs, suspend_outputs, resume_outputs, history_width
+  public :: mark_outputs, suspend_outputs, resume_outputs, history_width, eta_seconds
 
 contains
 
@@ -603,16 +603,24 @@ contains
     character(len=160) :: line
     elapsed = wall_seconds(out)
     frac = real(state%step, wp)/real(max(1_i8, state%nsteps), wp)
-    ! The rate of this process only: after a restart, the steps done
-    ! before it took no time here.
-    eta = 0.0_wp
-    if (state%step > out%first_step) eta = elapsed*real(state%nsteps - state%step, wp)/ &
-      real(state%step - out%first_step, wp)
+    eta = eta_seconds(elapsed, out%first_step, state%step, state%nsteps)
     write(line, '(a,i0,a,i0,a,f5.1,a,es11.4,a,a,a,es9.2)') 'step ', state%step, '/', state%nsteps, ' (', &
       100.0_wp*frac, ' %)  t = ', state%time, '  ETA ', hms(eta), '  energy balance ', &
       state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
     call log_info('progress', trim(line))
   end subroutine log_progress
+
+  !> Time to go at the rate of this process: `elapsed` wall seconds for the
+  !> steps first_step .. step, nsteps in all. After a restart first_step is
+  !> the checkpoint's step: the steps done before it took no time here
+  !> (counting them made the estimate 3-5 times too short). 0 before any
+  !> step of this process is done.
+  pure real(wp) function eta_seconds(elapsed, first_step, step, nsteps) result(eta)
+    real(wp), intent(in) :: elapsed
+    integer(i8), intent(in) :: first_step, step, nsteps
+    eta = 0.0_wp
+    if (step > first_step) eta = elapsed*real(nsteps - step, wp)/real(step - first_step, wp)
+  end function eta_seconds
 
   !> Wall seconds since the outputs were opened.
   real(wp) function wall_seconds(out)
