@@ -24,9 +24,16 @@ hpc_abspath() {
 }
 
 # hpc_find_raccord [GIVEN]: the raccord executable to use: GIVEN, else
-# $RACCORD, else `raccord` on PATH, else build/raccord of this repository.
+# $RACCORD, else the program installed with these scripts (PREFIX/bin/raccord
+# when they are PREFIX/share/raccord/hpc, cmake --install), else `raccord` on
+# PATH, else build/raccord of this repository.
 hpc_find_raccord() {
   _r=${1:-${RACCORD:-}}
+  if [ -z "$_r" ]; then
+    case "$hpc_dir" in
+    */share/raccord/hpc) [ -x "$hpc_dir/../../../bin/raccord" ] && _r=$(cd "$hpc_dir/../../../bin" && pwd)/raccord ;;
+    esac
+  fi
   if [ -z "$_r" ]; then
     if command -v raccord > /dev/null 2>&1; then
       _r=$(command -v raccord)

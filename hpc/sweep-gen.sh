@@ -6,7 +6,7 @@
 #   sh hpc/sweep-gen.sh [-o OUTDIR] [-r RACCORD] [--no-check] SWEEPFILE
 #
 # -o OUTDIR    the sweep folder (default results/<sweep file name without extension>)
-# -r RACCORD   the raccord executable (default $RACCORD, raccord on PATH, build/raccord)
+# -r RACCORD   the raccord executable (default $RACCORD, the installed raccord, raccord on PATH, build/raccord)
 # --no-check   write the decks without checking them (no raccord needed)
 #
 # A deck whose text did not change keeps its file (and its time stamp), so a

@@ -9,7 +9,7 @@
 #              first, OUTDIR (default results/<sweep file name without extension>)
 # SWEEPDIR     a sweep folder written by sweep-gen.sh (it holds cases.txt)
 # -j N         cases run at once (default: the number of processors)
-# -r RACCORD   the raccord executable (default $RACCORD, raccord on PATH, build/raccord)
+# -r RACCORD   the raccord executable (default $RACCORD, the installed raccord, raccord on PATH, build/raccord)
 #
 # A case is done when CASEDIR/case.h5 exists (complete: never .part or
 # .incomplete) and is newer than its deck; done cases are skipped, failed and

@@ -22,15 +22,20 @@ T = 2.0e-5
 load_x(dummy) = column(ct) <= T*1.0001 ? -column(cuy) : NaN
 unload_x(dummy) = column(ct) > T*1.0001 ? -column(cuy) : NaN
 set key font ',9' spacing 0.9
-plot hist('fig1b_nts_slave_block')       using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 1 title 'NTS, slave = block, loading', \
-     hist('fig1b_nts_slave_disc')        using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 2 title 'NTS, slave = disc, loading', \
-     hist('fig2a_mortar_p1_slave_block') using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 3 title 'mortar P1, slave = block, loading', \
-     hist('fig2a_mortar_p1_slave_disc')  using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 4 title 'mortar P1, slave = disc, loading', \
-     hist('fig2b_mortar_p0_slave_block') using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 6 title 'mortar P0, slave = block, loading', \
-     hist('fig3_mortar_p1_mu020')        using (load_x(0)):(-column(cry)) with lines lw 1.4 lc 7 title 'mortar P1, {/Symbol m} = 0.2, loading', \
-     hist('fig1b_nts_slave_block')       using (unload_x(0)):(-column(cry)) with lines dt 2 lc 1 title 'unloading (dashed, same colours)', \
-     hist('fig1b_nts_slave_disc')        using (unload_x(0)):(-column(cry)) with lines dt 2 lc 2 notitle, \
-     hist('fig2a_mortar_p1_slave_block') using (unload_x(0)):(-column(cry)) with lines dt 2 lc 3 notitle, \
-     hist('fig2a_mortar_p1_slave_disc')  using (unload_x(0)):(-column(cry)) with lines dt 2 lc 4 notitle, \
-     hist('fig2b_mortar_p0_slave_block') using (unload_x(0)):(-column(cry)) with lines dt 2 lc 6 notitle, \
-     hist('fig3_mortar_p1_mu020')        using (unload_x(0)):(-column(cry)) with lines dt 2 lc 7 notitle
+# The six runs nearly coincide, so each has its own colour, dash pattern
+# and marker; the markers are placed every few rows with a different
+# interval per run, so that where the lines lie on top of each other the
+# markers of all six still show. Loading: thicker lines; unloading: thin.
+runs = 'fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block fig3_mortar_p1_mu020'
+t1 = 'NTS, slave = block'; t2 = 'NTS, slave = disc'; t3 = 'mortar P1, slave = block'
+t4 = 'mortar P1, slave = disc'; t5 = 'mortar P0, slave = block'; t6 = 'mortar P1, {/Symbol m} = 0.2'
+colour(k) = word('#000000 #e69f00 #0072b2 #d55e00 #009e73 #cc79a7', k)
+dash(k) = k
+marker(k) = word('1 2 4 6 8 12', k) + 0
+every(k) = word('47 53 59 61 67 71', k) + 0
+name(k) = word(runs, k)
+title_of(k) = value(sprintf('t%d', k))
+plot for [k = 1:6] hist(name(k)) using (load_x(0)):(-column(cry)) with linespoints lw 1.6 dt dash(k) \
+       pt marker(k) ps 0.8 pi every(k) lc rgb colour(k) title title_of(k) . ', loading', \
+     for [k = 1:6] hist(name(k)) using (unload_x(0)):(-column(cry)) with linespoints lw 0.8 dt dash(k) \
+       pt marker(k) ps 0.6 pi every(k) lc rgb colour(k) title (k == 1 ? 'unloading (thin lines, same styles)' : '')

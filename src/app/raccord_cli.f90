@@ -151,7 +151,9 @@ contains
       'options:' // nl // &
       '  --check         read and check the scene and mesh, print the resolved scene,' // nl // &
       '                  stable time step, steps, elements and estimated cost; do not run' // nl // &
-      '  -o, --output DIR  write results to DIR (overrides &run output_dir)' // nl // &
+      '  -o, --output DIR  write results to DIR (overrides &run output_dir; default' // nl // &
+      '                  results/NAME, relative to the current folder, NAME = SCENE''s' // nl // &
+      '                  file name without extension)' // nl // &
       '  --wall-clock S  stop after at most S wall seconds: write the checkpoint' // nl // &
       '                  DIR/NAME.checkpoint.h5 and exit 5 (default: environment variable' // nl // &
       '                  RACCORD_WALLCLOCK_SECONDS, else &run wall_clock; SIGTERM and' // nl // &
@@ -163,6 +165,12 @@ contains
       '  -v, --verbose   debug messages' // nl // &
       '  -V, --version   print the version' // nl // &
       '  -h, --help      this text' // nl // nl // &
+      'environment:' // nl // &
+      '  OMP_NUM_THREADS=N  run the element and node loops on N threads (default: serial;' // nl // &
+      '                  the results are the same bit for bit with any N)' // nl // &
+      '  RACCORD_WALLCLOCK_SECONDS=S  as --wall-clock S (the option wins)' // nl // nl // &
+      'files: DIR/NAME.h5 and NAME.xmf (ParaView), NAME.meshio.xmf (meshio), NAME.history.txt,' // nl // &
+      '  NAME.contact<k>.txt, NAME.scene.nml, NAME.log; *.part while running (doc/output-format.md)' // nl // nl // &
       'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure,' // nl // &
       '            4 file system failure, 5 stopped at the wall-clock limit or by SIGTERM or SIGUSR1,' // nl // &
       '            checkpoint written: continue with --restart (a checkpoint it refuses: 2)'

@@ -18,6 +18,7 @@ program raccord_main
     LEVEL_DEBUG, log_unit
   use raccord_strings, only: str
   use raccord_version, only: raccord_version_string
+  use raccord_host, only: host_name
   use raccord_signals, only: install_stop_signals
   use raccord_cli, only: cli_t, parse_command_line, usage_text
   use raccord_scene, only: scene_t
@@ -294,7 +295,7 @@ contains
       call raise_error(err, EXIT_IO, 'cannot write the log file ' // stem // '.log: ' // trim(msg))
       call finish(err)
     end if
-    call log_info('raccord', 'raccord ' // raccord_version_string // ', scene ' // scene%path)
+    call log_info('raccord', 'raccord ' // raccord_version_string // ', scene ' // scene%path // ', host ' // host_name())
     ! The resolved scene, every key with its final value, in the run log.
     call write_scene(scene, log_unit())
   end subroutine open_run_folder

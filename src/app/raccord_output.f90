@@ -14,10 +14,11 @@ module raccord_output
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
     results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
-    results_delete, results_flush
+    results_delete, results_flush, results_add_surface, results_write_surface_frame
   use raccord_history_file, only: history_file_t, history_open, history_write, history_close, history_bytes, &
     history_suspend, history_resume
   use raccord_contact_pair, only: contact_pair_t
+  use raccord_contact_surface, only: contact_surface_t
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file, file_size, truncate_file
@@ -26,6 +27,12 @@ module raccord_output
   private
 
   integer, parameter :: col_len = 40
+
+  !> Per-node values of a contact pair's slave surface grid in the results
+  !> (doc/output-format.md, "Contact surfaces"), in the columns of
+  !> write_contact_frame's values array.
+  character(len=*), parameter :: SURFACE_FIELDS(7) = [character(len=14) :: 'pressure', 'shear', 'gap', &
+    'slip_increment', 'status', 'lambda_n', 'lambda_t']
 
   type, public :: output_t
     character(len=:), allocatable :: stem
@@ -41,7 +48,11 @@ module raccord_output
     real(wp), allocatable :: table(:,:)        !< history rows kept for the HDF5 copy
     integer :: nrow = 0
     real(wp), allocatable :: s_node(:,:), wsum(:), r_node(:,:)   !< frame scratch, sized once
+    !> Contact frame scratch, sized once for the largest surfaces: deformed
+    !> slave and master coordinates, slave values (one column per SURFACE_FIELDS).
+    real(wp), allocatable :: surf_xy(:,:), surf_xm(:,:), surf_values(:,:), surf_none(:,:)
     integer(i8) :: clock_start = 0, clock_rate = 1, clock_last = 0
+    integer(i8) :: first_step = -1              !< first step of this process (a restart's is > 0)
     real(wp) :: progress_seconds = 10.0_wp
     integer, allocatable :: profile_unit(:)     !< per contact pair: text profiles, one block per frame
     character(len=:), allocatable :: profile_path
@@ -58,7 +69,7 @@ module raccord_output
   end type output_mark_t
 
   public :: open_outputs, write_due_outputs, close_outputs, wall_seconds
-  public :: mark_outputs, suspend_outputs, resume_outputs, history_width
+  public :: mark_outputs, suspend_outputs, resume_outputs, history_width, eta_seconds
 
 contains
 
@@ -83,6 +94,8 @@ contains
       call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
       if (err%failed()) return
     end do
+    call add_contact_surfaces(out, pairs, err)
+    if (err%failed()) return
     call keep_resolved_scene(scene, stem, out%res, err)
     if (err%failed()) return
     call history_open(out%hist, stem // '.history.txt', out%columns, err)
@@ -101,7 +114,7 @@ contains
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
-    integer :: nrow_max
+    integer :: nrow_max, k, ns, nm
     out%stem = stem
     out%stress = scene%output%stress
     out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
@@ -113,6 +126,13 @@ contains
     nrow_max = int(plan%nsteps/out%history_every) + 3
     allocate(out%table(size(out%columns), nrow_max))
     allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
+    ns = 0
+    nm = 0
+    do k = 1, size(pairs)
+      ns = max(ns, pairs(k)%slave%nnode)
+      nm = max(nm, pairs(k)%master%nnode)
+    end do
+    allocate(out%surf_xy(2, ns), out%surf_xm(2, nm), out%surf_values(ns, size(SURFACE_FIELDS)), out%surf_none(nm, 0))
   end subroutine prepare_outputs
 
   !> The element blocks of the results file, one per body block.
@@ -247,6 +267,8 @@ contains
     call results_resume(out%res, stem, model%nnode, result_blocks(model), fields, ncomps, mark%frames_written, err)
     if (err%failed()) return
     out%is_open = .true.
+    call add_contact_surfaces(out, pairs, err)
+    if (err%failed()) return
     do k = 1, size(pairs)
       n = mark%frames_written
       do
@@ -278,6 +300,43 @@ contains
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
   end subroutine resume_outputs
+
+  !> Each pair's slave surface (with the contact values) and master
+  !> surface (coordinates only) as surface grids of the results, named
+  !> contact<k>_<surface>.
+  subroutine add_contact_surfaces(out, pairs, err)
+    type(output_t), intent(inout) :: out
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(error_t), intent(inout) :: err
+    character(len=0), parameter :: none(0) = [character(len=0) ::]
+    integer :: k
+    do k = 1, size(pairs)
+      associate (sl => pairs(k)%slave, ma => pairs(k)%master)
+        call results_add_surface(out%res, 'contact' // str(k) // '_' // sl%name, '/contact/pair_' // str(k), '', &
+          surface_segments(sl), sl%nnode, SURFACE_FIELDS, err)
+        call results_add_surface(out%res, 'contact' // str(k) // '_' // ma%name, '/contact/pair_' // str(k), &
+          'master_', surface_segments(ma), ma%nnode, none, err)
+      end associate
+      if (err%failed()) return
+    end do
+  end subroutine add_contact_surfaces
+
+  !> Segments of a surface as indices into its node list (ends, then the
+  !> middle node of a quadratic edge).
+  function surface_segments(surf) result(conn)
+    type(contact_surface_t), intent(in) :: surf
+    integer, allocatable :: conn(:,:)
+    integer :: i, j, k
+    allocate(conn(surf%nen_seg, surf%nseg))
+    do k = 1, surf%nseg
+      do j = 1, surf%nen_seg
+        conn(j, k) = 0
+        do i = 1, surf%nnode
+          if (surf%node(i) == surf%seg(j, k)) conn(j, k) = i
+        end do
+      end do
+    end do
+  end function surface_segments
 
   !> The resolved scene (every key with its final value) beside the
   !> results as <stem>.scene.nml, and as text in the HDF5 file (/scene, with
@@ -388,6 +447,7 @@ contains
     integer(i8) :: now
 
     last = state%step == state%nsteps
+    if (out%first_step < 0) out%first_step = state%step
     if (mod(state%step, out%history_every) == 0 .or. last) then
       call fill_history_row(out, model, state, pairs)
       call history_write(out%hist, out%row, err)
@@ -495,17 +555,18 @@ contains
         if (err%failed()) return
       end if
     end if
-    call results_end_frame(out%res, err)
-    if (err%failed()) return
     do k = 1, size(pairs)
       call write_contact_frame(out, k, pairs(k), model, state, err)
       if (err%failed()) return
     end do
+    call results_end_frame(out%res, err)
+    if (err%failed()) return
     out%frames_written = out%frames_written + 1
   end subroutine write_frame
 
   !> Contact profile of pair k at this frame: HDF5 arrays under
-  !> /contact/pair_<k>/frame_<n>/ and a block of the text profile.
+  !> /contact/pair_<k>/frame_<n>/ (the slave and master surface grids, and
+  !> s0 and the pair's force) and a block of the text profile.
   subroutine write_contact_frame(out, k, pair, model, state, err)
     type(output_t), intent(inout) :: out
     integer, intent(in) :: k
@@ -515,23 +576,33 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: base
     character(len=16) :: tag
-    real(wp), allocatable :: xy(:,:), gap(:)
-    integer :: i, p, ios
+    integer :: i, p, ios, ns, nm
     write(tag, '(i6.6)') out%frames_written
     base = '/contact/pair_' // str(k) // '/frame_' // trim(tag) // '/'
-    allocate(xy(2, pair%slave%nnode), gap(pair%slave%nnode))
+    ns = pair%slave%nnode
+    nm = pair%master%nnode
+    associate (xy => out%surf_xy(:, 1:ns), xm => out%surf_xm(:, 1:nm), values => out%surf_values(1:ns, :))
     do i = 1, pair%slave%nnode
       p = pair%slave%node(i)
       xy(:, i) = model%x(:, p) + state%u(:, p)
     end do
-    gap = merge(pair%gap, 0.0_wp, pair%status /= ST_OPEN)
+    do i = 1, pair%master%nnode
+      p = pair%master%node(i)
+      xm(:, i) = model%x(:, p) + state%u(:, p)
+    end do
+    ! Columns in the order of SURFACE_FIELDS; the gap of an open node is
+    ! written as 0 (as in the text profile: it is not computed there).
+    values(:, 1) = pair%pressure
+    values(:, 2) = pair%shear
+    values(:, 3) = merge(pair%gap, 0.0_wp, pair%status /= ST_OPEN)
+    values(:, 4) = pair%slip
+    values(:, 5) = real(pair%status, wp)
+    values(:, 6) = pair%lam_n
+    values(:, 7) = pair%lam_t
     call results_write_array(out%res, base // 's0', pair%slave%s0, err)
-    call results_write_array(out%res, base // 'xy', xy, err)
-    call results_write_array(out%res, base // 'pressure', pair%pressure, err)
-    call results_write_array(out%res, base // 'shear', pair%shear, err)
-    call results_write_array(out%res, base // 'status', real(pair%status, wp), err)
-    call results_write_array(out%res, base // 'slip_increment', pair%slip, err)
     call results_write_array(out%res, base // 'force', pair%force, err)
+    call results_write_surface_frame(out%res, 2*k - 1, xy, values, err)
+    call results_write_surface_frame(out%res, 2*k, xm, out%surf_none(1:nm, :), err)
     if (err%failed()) return
     write(out%profile_unit(k), '(a,i0,a,es24.16,a,i0)', iostat=ios) '# frame ', out%frames_written, '  time ', &
       state%time, '  step ', state%step
@@ -541,6 +612,7 @@ contains
         pair%slip(i), pair%lam_n(i), pair%lam_t(i)
     end do
     write(out%profile_unit(k), '(/)', iostat=ios)
+    end associate
     if (ios /= 0) call raise_error(err, EXIT_IO, 'cannot write ' // profile_name(out, k) // '.part')
   end subroutine write_contact_frame
 
@@ -551,13 +623,24 @@ contains
     character(len=160) :: line
     elapsed = wall_seconds(out)
     frac = real(state%step, wp)/real(max(1_i8, state%nsteps), wp)
-    eta = 0.0_wp
-    if (frac > 0.0_wp) eta = elapsed*(1.0_wp - frac)/frac
+    eta = eta_seconds(elapsed, out%first_step, state%step, state%nsteps)
     write(line, '(a,i0,a,i0,a,f5.1,a,es11.4,a,a,a,es9.2)') 'step ', state%step, '/', state%nsteps, ' (', &
       100.0_wp*frac, ' %)  t = ', state%time, '  ETA ', hms(eta), '  energy balance ', &
       state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
     call log_info('progress', trim(line))
   end subroutine log_progress
+
+  !> Time to go at the rate of this process: `elapsed` wall seconds for the
+  !> steps first_step .. step, nsteps in all. After a restart first_step is
+  !> the checkpoint's step: the steps done before it took no time here
+  !> (counting them made the estimate 3-5 times too short). 0 before any
+  !> step of this process is done.
+  pure real(wp) function eta_seconds(elapsed, first_step, step, nsteps) result(eta)
+    real(wp), intent(in) :: elapsed
+    integer(i8), intent(in) :: first_step, step, nsteps
+    eta = 0.0_wp
+    if (step > first_step) eta = elapsed*real(nsteps - step, wp)/real(step - first_step, wp)
+  end function eta_seconds
 
   !> Wall seconds since the outputs were opened.
   real(wp) function wall_seconds(out)
@@ -598,7 +681,7 @@ contains
     if (e2%failed()) call raise_error(err, e2%code, e2%message)
     if (e3%failed()) call raise_error(err, e3%code, e3%message)
     if (ok) call log_raw('results: ' // out%stem // '.h5, ' // out%stem // &
-      '.xmf (ParaView), ' // out%stem // '.history.txt (gnuplot)')
+      '.xmf (ParaView), ' // out%stem // '.meshio.xmf (meshio), ' // out%stem // '.history.txt (gnuplot)')
   end subroutine close_outputs
 
   !> Close the profile files: final name when complete, *.incomplete.txt otherwise.

@@ -3,22 +3,32 @@
 !> closing summary.
 module raccord_run_report
   use raccord_kinds, only: wp, i8
-  use raccord_log, only: log_raw, log_info
+  use raccord_log, only: log_raw, log_info, log_level, log_set_level, LEVEL_ERROR
+  use raccord_error, only: error_t
   use raccord_strings, only: str
   use raccord_mesh, only: mesh_t, element_name
   use raccord_model, only: model_t
   use raccord_scene, only: scene_t
   use raccord_state, only: state_t, init_state
   use raccord_time_step, only: time_plan_t
-  use raccord_central_difference, only: compute_forces, predict_motion
+  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_elastic_block, only: add_nodal_stress
   use raccord_output, only: output_t, wall_seconds
-  use raccord_contact_pair, only: contact_pair_t
-  use raccord_scene, only: METHOD_NTS
+  use raccord_contact_pair, only: contact_pair_t, enforce_contact
+  use raccord_scene, only: METHOD_NTS, MULT_P0, MULT_P1, MULT_DUAL
   use raccord_material, only: KIN_FINITE, kinematics_name, material_name, volumetric_name
   implicit none
   private
 
   public :: report_plan, report_summary, run_stem
+
+  !> Measured wall seconds of the parts of a step (measure_step_cost).
+  type :: step_cost_t
+    real(wp) :: element = 0.0_wp     !< forces, predictor, energy: per step
+    real(wp) :: contact = 0.0_wp     !< search, matching, multiplier solve: per step
+    real(wp) :: frame = 0.0_wp       !< one output frame's stress recovery
+    integer :: steps = 0             !< timed trial steps
+  end type step_cost_t
 
 contains
 
@@ -43,7 +53,8 @@ contains
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     integer :: ib, k, nq4, nq8
-    real(wp) :: per_step, c
+    real(wp) :: c, setup
+    type(step_cost_t) :: cost
     character(len=:), allocatable :: effects
 
     if (len_trim(scene%run%title) > 0) then
@@ -94,8 +105,8 @@ contains
     do k = 1, size(pairs)
       call log_raw('contact pair ' // str(k) // ': slave ' // pairs(k)%slave%name // ' (' // &
         str(pairs(k)%slave%nnode) // ' nodes), master ' // pairs(k)%master%name // ' (' // &
-        str(pairs(k)%master%nseg) // ' segments), ' // merge('node-to-segment', 'mortar         ', &
-        pairs(k)%method == METHOD_NTS) // ', mu = ' // str(pairs(k)%mu, 4) // ', search distance ' // &
+        str(pairs(k)%master%nseg) // ' segments), ' // matching_text(pairs(k)) // ', mu = ' // &
+        str(pairs(k)%mu, 4) // ', search distance ' // &
         str(pairs(k)%reach, 4))
     end do
     if (size(pairs) == 0) then
@@ -111,11 +122,41 @@ contains
       str(plan%nsteps) // ' steps')
     if (model%has_finite) call log_raw('time    finite strain: the step follows the deforming mesh ' // &
       '(current length and wave speed, at most the dt above); the step count is an estimate')
-    per_step = measure_step_seconds(model, plan)
-    call log_raw('cost    about ' // str(1.0e9_wp*per_step/real(max(1, model%nelem), wp), 3) // &
-      ' ns per element per step measured here; estimated run time ' // &
-      str(per_step*real(plan%nsteps, wp), 3) // ' s (without output)')
+    cost = measure_step_cost(model, plan, pairs)
+    ! What the run does before its first step (reading, building, this
+    ! trial): the processor time of this process so far.
+    call cpu_time(setup)
+    associate (n => real(plan%nsteps, wp), frames => real(scene%output%frames + 1, wp))
+      call log_raw('cost    about ' // str(1.0e9_wp*cost%element/real(max(1, model%nelem), wp), 3) // &
+        ' ns per element per step and ' // str(1.0e6_wp*cost%contact, 3) // ' us of contact per step, timed ' // &
+        'here over ' // str(cost%steps) // ' trial steps (' // trim(merge('wall     ', 'processor', &
+        model%nthreads > 1)) // ' time); estimated run time ' // &
+        str(setup + (cost%element + cost%contact)*n + cost%frame*frames, 3) // ' s (setup ' // str(setup, 3) // &
+        ' s, elements ' // str(cost%element*n, 3) // ' s, contact ' // str(cost%contact*n, 3) // ' s, output ' // &
+        str(cost%frame*frames, 3) // ' s)')
+    end associate
   end subroutine report_plan
+
+  !> The matching and the multiplier space of a pair, as the plan names
+  !> them (doc/theory-contact.md, doc/theory-contact-mortar.md).
+  function matching_text(pair) result(s)
+    type(contact_pair_t), intent(in) :: pair
+    character(len=:), allocatable :: s
+    if (pair%method == METHOD_NTS) then
+      s = 'node-to-segment matching, multipliers at the slave nodes'
+      return
+    end if
+    select case (pair%multiplier)
+    case (MULT_P0)
+      s = 'mortar matching, P0 multipliers (constant per slave segment)'
+    case (MULT_P1)
+      s = 'mortar matching, P1 multipliers (linear, at the slave nodes)'
+    case (MULT_DUAL)
+      s = 'mortar matching, dual multipliers'
+    case default
+      s = 'mortar matching, multiplier space ' // str(pair%multiplier)
+    end select
+  end function matching_text
 
   !> ' (Q4 mean_dilatation)' and the like for a finite-strain body's blocks.
   function finite_detail(b) result(s)
@@ -145,25 +186,84 @@ contains
     end do
   end function block_types
 
-  !> Wall time of one step (forces + predictor) on a scratch state, the
-  !> median-free mean of a few repetitions: enough for an estimate.
-  real(wp) function measure_step_seconds(model, plan) result(sec)
+  !> Seconds per step of the real step, from a short trial run on scratch
+  !> copies of the state and the contact pairs from t = 0: the elastic work
+  !> (forces, predictor, energy) and the contact work (search, matching,
+  !> multipliers) apart; and the work of one output frame (the nodal stress
+  !> recovery; the HDF5 writes are not timed). The first step is not timed
+  !> (first touch of the scratch arrays); the trial stops after about 0.5 s
+  !> or 500 steps. Its messages (a first-step overlap, say) are held back:
+  !> the run itself reports them. A serial run is timed in processor time,
+  !> which other processes on the machine do not inflate: the estimate is
+  !> then the run time on a core of its own (a batch job's); a threaded run
+  !> is timed in wall time.
+  function measure_step_cost(model, plan, pairs) result(cost)
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(step_cost_t) :: cost
     type(state_t) :: scratch
-    integer(i8) :: t0, t1, rate
-    integer :: k, reps
+    type(contact_pair_t), allocatable :: trial(:)
+    type(error_t) :: err
+    real(wp), allocatable :: s_node(:,:), wsum(:)
+    real(wp) :: t0, t1, t2, t3, element_sec, contact_sec
+    integer :: k, ib, level, nstep
+    logical :: threaded
+    level = log_level()
+    call log_set_level(LEVEL_ERROR + 1)
     call init_state(model, plan%dt, plan%nsteps, scratch)
-    reps = max(3, min(50, int(2.0e6_wp/real(max(1, model%nelem), wp))))
-    call compute_forces(model, scratch)
-    call system_clock(t0, rate)
-    do k = 1, reps
+    if (model%has_body_force) scratch%f_ext = model%f_body
+    trial = pairs
+    threaded = model%nthreads > 1
+    element_sec = 0.0_wp
+    contact_sec = 0.0_wp
+    nstep = 0
+    do k = 0, int(min(500_i8, plan%nsteps))
+      t0 = seconds_now(threaded)
       call compute_forces(model, scratch)
       call predict_motion(model, scratch)
+      t1 = seconds_now(threaded)
+      if (size(trial) > 0) call enforce_contact(trial, model, scratch, err)
+      if (err%failed()) exit
+      t2 = seconds_now(threaded)
+      call update_energy(model, scratch)
+      call advance_state(scratch)
+      t3 = seconds_now(threaded)
+      if (k == 0) cycle
+      element_sec = element_sec + (t1 - t0) + (t3 - t2)
+      contact_sec = contact_sec + (t2 - t1)
+      nstep = nstep + 1
+      if (element_sec + contact_sec > 0.5_wp) exit
     end do
-    call system_clock(t1)
-    sec = real(t1 - t0, wp)/real(rate, wp)/real(reps, wp)
-  end function measure_step_seconds
+    cost%steps = nstep
+    cost%element = element_sec/real(max(1, nstep), wp)
+    cost%contact = contact_sec/real(max(1, nstep), wp)
+    if (size(trial) == 0) cost%contact = 0.0_wp      ! only the clock's own cost was timed
+    allocate(s_node(4, model%nnode), wsum(model%nnode))
+    s_node = 0.0_wp
+    wsum = 0.0_wp
+    t0 = seconds_now(threaded)
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        call add_nodal_stress(model%bodies(ib)%blocks(k), scratch%u, s_node, wsum)
+      end do
+    end do
+    t1 = seconds_now(threaded)
+    cost%frame = t1 - t0
+    call log_set_level(level)
+  end function measure_step_cost
+
+  !> Processor time of this process, or wall time when `wall`.
+  real(wp) function seconds_now(wall) result(t)
+    logical, intent(in) :: wall
+    integer(i8) :: count, rate
+    if (wall) then
+      call system_clock(count, rate)
+      t = real(count, wp)/real(rate, wp)
+    else
+      call cpu_time(t)
+    end if
+  end function seconds_now
 
   !> Wall time, speed and the final energy balance.
   !> first_step: the step this process started from (0, or the step of

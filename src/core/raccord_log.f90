@@ -1,16 +1,19 @@
 !> Run log: every message carries its level and caller, goes to the run's
-!> log file (when one is open) and to standard output or error.
+!> log file (when one is open, each line with its local time stamp) and to
+!> standard output or error. Standard output is flushed after every line,
+!> so that a batch job's redirected output shows the progress as it goes.
 !>
 !> The log is the one piece of module state in raccord: a run has one log,
 !> and threading it through every call would hide the algorithm.
 module raccord_log
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use raccord_host, only: time_stamp
   implicit none
   private
 
   integer, parameter, public :: LEVEL_DEBUG = 0, LEVEL_INFO = 1, LEVEL_WARN = 2, LEVEL_ERROR = 3
 
-  public :: log_open, log_close, log_set_level, log_set_quiet
+  public :: log_open, log_close, log_set_level, log_level, log_set_quiet
   public :: log_debug, log_info, log_warn, log_error, log_raw, log_unit
 
   integer :: file_unit = -1
@@ -51,6 +54,11 @@ contains
     threshold = level
   end subroutine log_set_level
 
+  !> The level set by log_set_level.
+  integer function log_level()
+    log_level = threshold
+  end function log_level
+
   !> Quiet: informational lines go to the log file only.
   subroutine log_set_quiet(flag)
     logical, intent(in) :: flag
@@ -85,7 +93,10 @@ contains
   !> A line without level or caller (tables, echoed scene), to stdout and file.
   subroutine log_raw(text)
     character(len=*), intent(in) :: text
-    if (.not. quiet) write(output_unit, '(a)') text
+    if (.not. quiet) then
+      write(output_unit, '(a)') text
+      flush(output_unit)
+    end if
     if (file_unit /= -1) write(file_unit, '(a)') text
   end subroutine log_raw
 
@@ -103,9 +114,10 @@ contains
       flush(error_unit)
     else if (.not. quiet) then
       write(output_unit, '(a)') line
+      flush(output_unit)
     end if
     if (file_unit /= -1) then
-      write(file_unit, '(a)') line
+      write(file_unit, '(a)') time_stamp() // ' ' // line
       flush(file_unit)
     end if
   end subroutine emit

@@ -8,8 +8,14 @@
 !> stem.h5 / stem.xmf only when the run says it is complete, otherwise to
 !> stem.incomplete.h5 / stem.incomplete.xmf with the reason in /status.
 !>
-!> Usage: results_open, results_write_mesh (once), then per output frame
-!> results_begin_frame, results_write_nodal (per field), results_end_frame;
+!> Nodes are stored grouped by element block (raccord_node_order), so that
+!> each body's grid in the XDMF is a hyperslab of the global arrays; callers
+!> pass and get model order, the module permutes.
+!>
+!> Usage: results_open, results_write_mesh (once), results_add_surface (per
+!> contact surface), then per output frame results_begin_frame,
+!> results_write_nodal (per field), results_write_surface_frame (per
+!> surface, in the order added), results_end_frame;
 !> results_write_array / _table / _node_set / results_set_text at any time
 !> while open; results_close last, also after an error.
 !> A run that stops at a checkpoint calls results_suspend instead (the file
@@ -26,7 +32,9 @@ module raccord_results
     h5_write_real, h5_write_int, h5_write_text, h5_attr_real, h5_attr_int, h5_attr_text, &
     h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
   use raccord_h5_read, only: h5_read_real, h5_read_attr_text, h5_dims
-  use raccord_xdmf, only: xdmf_block_t, xdmf_field_t, xdmf_frame_t, write_xdmf, frame_label
+  use raccord_xdmf, only: xdmf_block_t, xdmf_field_t, xdmf_frame_t, xdmf_surface_t, write_xdmf, &
+    write_meshio_index, frame_label
+  use raccord_node_order, only: node_order
   implicit none
   private
 
@@ -34,10 +42,11 @@ module raccord_results
   public :: results_begin_frame, results_write_nodal, results_end_frame
   public :: results_write_array, results_write_table, results_set_text, results_close
   public :: results_suspend, results_resume, results_has, results_delete, results_flush
+  public :: results_add_surface, results_write_surface_frame
 
   !> Version of the file layout, stored as the root attribute format_version;
   !> bump it when doc/output-format.md changes incompatibly.
-  integer, parameter, public :: RESULTS_FORMAT_VERSION = 1
+  integer, parameter, public :: RESULTS_FORMAT_VERSION = 2
 
   !> One body's elements for the mesh section.
   type, public :: result_block_t
@@ -57,6 +66,10 @@ module raccord_results
     integer(hid_t) :: file = -1
     integer :: nnode = -1                          !< -1 until the mesh is written
     type(xdmf_block_t), allocatable :: blocks(:)
+    integer, allocatable :: order(:)               !< (nnode) model node stored at each row
+    integer, allocatable :: row(:)                 !< (nnode) row of each model node
+    real(wp), allocatable :: s1(:), s3(:,:), sn(:,:) !< nodal fields in row order, sized on first use
+    type(xdmf_surface_t), allocatable :: surfaces(:)
     logical :: in_frame = .false.
     integer :: nframe = 0                          !< frames begun
     integer :: step = 0                            !< step of the current frame
@@ -67,6 +80,94 @@ module raccord_results
   interface results_write_array
     module procedure write_array_1d, write_array_2d
   end interface results_write_array
+
+  interface
+    !> Reopen a suspended run's file (raccord_results_resume).
+    module subroutine results_resume(res, stem, nnode, blocks, fields, ncomps, nframe, err)
+      type(results_t), intent(inout) :: res
+      character(len=*), intent(in) :: stem
+      integer, intent(in) :: nnode
+      type(result_block_t), intent(in) :: blocks(:)
+      character(len=*), intent(in) :: fields(:)
+      integer, intent(in) :: ncomps(:), nframe
+      type(error_t), intent(inout) :: err
+    end subroutine results_resume
+
+    !> A path made absolute ('a/b' -> '/a/b'), trailing blanks removed.
+    module pure function absolute(path) result(s)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: s
+    end function absolute
+
+    !> File part of a path ('out/run' -> 'run').
+    module pure function base_name(path) result(s)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: s
+    end function base_name
+
+    !> A name becomes one HDF5 link: not empty, no '/'.
+    module subroutine check_name(name, what, err)
+      character(len=*), intent(in) :: name, what
+      type(error_t), intent(inout) :: err
+    end subroutine check_name
+
+    !> Flush to disk so that a killed run keeps everything written so far.
+    module subroutine flush_file(res, what, err)
+      type(results_t), intent(in) :: res
+      character(len=*), intent(in) :: what
+      type(error_t), intent(inout) :: err
+    end subroutine flush_file
+
+    !> How a nodal field of ncomp components is stored in frame `frame`
+    !> (0-based): path, XDMF kind, stored components.
+    module pure function nodal_field(name, ncomp, frame) result(field)
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: ncomp, frame
+      type(xdmf_field_t) :: field
+    end function nodal_field
+
+    !> Record the blocks as the XDMF references them and the node order they
+    !> imply (raccord_node_order); sets res%nnode.
+    module subroutine set_layout(res, nnode, blocks)
+      type(results_t), intent(inout) :: res
+      integer, intent(in) :: nnode
+      type(result_block_t), intent(in) :: blocks(:)
+    end subroutine set_layout
+
+    !> True when the results file is open; otherwise an error naming the caller.
+    module logical function usable(res, caller, err)
+      type(results_t), intent(in) :: res
+      character(len=*), intent(in) :: caller
+      type(error_t), intent(inout) :: err
+    end function usable
+
+    !> Finish the file (raccord_results_close).
+    module subroutine results_close(res, complete, err, reason)
+      type(results_t), intent(inout) :: res
+      logical, intent(in) :: complete
+      type(error_t), intent(inout) :: err
+      character(len=*), intent(in), optional :: reason
+    end subroutine results_close
+
+    !> Add a contact surface grid (raccord_results_surface).
+    module subroutine results_add_surface(res, name, base, prefix, conn, nnode, fields, err)
+      type(results_t), intent(inout) :: res
+      character(len=*), intent(in) :: name, base, prefix
+      integer, intent(in) :: conn(:,:)
+      integer, intent(in) :: nnode
+      character(len=*), intent(in) :: fields(:)
+      type(error_t), intent(inout) :: err
+    end subroutine results_add_surface
+
+    !> A surface's coordinates xy(2, n) and values(n, nfield) in the current
+    !> frame (raccord_results_surface).
+    module subroutine results_write_surface_frame(res, isurf, xy, values, err)
+      type(results_t), intent(inout) :: res
+      integer, intent(in) :: isurf
+      real(wp), intent(in) :: xy(:,:), values(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine results_write_surface_frame
+  end interface
 
 contains
 
@@ -107,12 +208,15 @@ contains
       return
     end if
     res%is_open = .true.
-    allocate(res%blocks(0), res%frames(8))
+    allocate(res%blocks(0), res%frames(8), res%surfaces(0))
     call delete_file(res%stem // '.h5')
     call delete_file(res%stem // '.xmf')
     call delete_file(res%stem // '.xmf.part')
+    call delete_file(res%stem // '.meshio.xmf')
+    call delete_file(res%stem // '.meshio.xmf.part')
     call delete_file(res%stem // '.incomplete.h5')
     call delete_file(res%stem // '.incomplete.xmf')
+    call delete_file(res%stem // '.incomplete.meshio.xmf')
     root = res%file
     call h5_attr_text(root, 'format', 'raccord results', res%where, err)
     call h5_attr_int(root, 'format_version', RESULTS_FORMAT_VERSION, res%where, err)
@@ -123,8 +227,10 @@ contains
     call flush_file(res, 'the file header', err)
   end subroutine results_open
 
-  !> Write node coordinates x(2, nnode) to /mesh/x and each block's 0-based
-  !> connectivity to /mesh/blocks/<name>/connectivity. Once per file.
+  !> Write node coordinates x(2, nnode) to /mesh/x in row order, the model
+  !> index of each row to /mesh/node_index, and each block's 0-based rows
+  !> to /mesh/blocks/<name>/connectivity (and, from the block's first row,
+  !> local_connectivity; attributes first_row, row_count). Once per file.
   subroutine results_write_mesh(res, x, blocks, err)
     type(results_t), intent(inout) :: res
     real(wp), intent(in) :: x(:,:)
@@ -148,29 +254,28 @@ contains
     nnode = size(x, 2)
     call check_blocks(blocks, nnode, err)
     if (err%failed()) return
-    call h5_write_real(res%file, '/mesh/x', x, res%where, err)
+    call set_layout(res, nnode, blocks)
+    call h5_write_real(res%file, '/mesh/x', x(:, res%order), res%where, err)
+    call h5_write_int(res%file, '/mesh/node_index', res%order - 1, res%where, err)
     if (err%failed()) return
-    deallocate(res%blocks)
-    allocate(res%blocks(size(blocks)))
     do b = 1, size(blocks)
       path = '/mesh/blocks/' // blocks(b)%name
-      ! 0-based so XDMF readers use the dataset as it is.
-      call h5_write_int(res%file, path // '/connectivity', blocks(b)%conn - 1, res%where, err)
+      ! 0-based so XDMF readers use the datasets as they are.
+      call h5_write_int(res%file, path // '/connectivity', rows_of(res%row, blocks(b)%conn) - 1, res%where, err)
+      call h5_write_int(res%file, path // '/local_connectivity', rows_of(res%row, blocks(b)%conn) - 1 &
+        - res%blocks(b)%first, res%where, err)
       if (err%failed()) return
       call h5gopen_checked(res, path, grp, err)
       if (err%failed()) return
+      call h5_attr_int(grp, 'first_row', res%blocks(b)%first, res%where, err)
+      call h5_attr_int(grp, 'row_count', res%blocks(b)%count, res%where, err)
       call h5_attr_int(grp, 'nen', blocks(b)%nen, res%where, err)
       call h5_attr_text(grp, 'topology', trim(merge('Quadrilateral_8', 'Quadrilateral  ', blocks(b)%nen == 8)), &
         res%where, err)
       call h5gclose_f(grp, hdferr)
       if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close group "' // path // '" in ' // res%where)
       if (err%failed()) return
-      res%blocks(b)%name = blocks(b)%name
-      res%blocks(b)%conn_path = path // '/connectivity'
-      res%blocks(b)%nen = blocks(b)%nen
-      res%blocks(b)%nel = size(blocks(b)%conn, 2)
     end do
-    res%nnode = nnode
     call flush_file(res, 'the mesh', err)
   end subroutine results_write_mesh
 
@@ -191,7 +296,11 @@ contains
         return
       end if
     end if
-    call h5_write_int(res%file, '/mesh/node_sets/' // trim(name), nodes - 1, res%where, err)
+    if (res%nnode >= 0) then
+      call h5_write_int(res%file, '/mesh/node_sets/' // trim(name), res%row(nodes) - 1, res%where, err)
+    else
+      call h5_write_int(res%file, '/mesh/node_sets/' // trim(name), nodes - 1, res%where, err)
+    end if
   end subroutine results_write_node_set
 
   !> Start output frame number nframe (group /frames/NNNNNN, six digits from
@@ -235,6 +344,7 @@ contains
     res%nframe = res%nframe + 1
     res%frames(res%nframe)%time = time
     res%frames(res%nframe)%nfield = 0
+    res%frames(res%nframe)%nsurf = 0
     allocate(res%frames(res%nframe)%fields(4))
     res%step = step
     res%in_frame = .true.
@@ -251,7 +361,6 @@ contains
     type(error_t), intent(inout) :: err
     type(xdmf_field_t) :: field
     type(xdmf_field_t), allocatable :: grown(:)
-    real(wp), allocatable :: padded(:,:)
     integer :: ncomp, k
     if (.not. usable(res, 'results_write_nodal', err)) return
     if (.not. res%in_frame) then
@@ -269,16 +378,24 @@ contains
       return
     end if
     field = nodal_field(name, ncomp, res%nframe - 1)
+    ! In row order; the buffers are allocated at the first frame only.
     select case (ncomp)
     case (1)
-      call h5_write_real(res%file, field%path, values(1, :), res%where, err)
+      if (.not. allocated(res%s1)) allocate(res%s1(res%nnode))
+      res%s1 = values(1, res%order)
+      call h5_write_real(res%file, field%path, res%s1, res%where, err)
     case (2)
-      allocate(padded(3, res%nnode))
-      padded(1:2, :) = values
-      padded(3, :) = 0.0_wp
-      call h5_write_real(res%file, field%path, padded, res%where, err)
+      if (.not. allocated(res%s3)) allocate(res%s3(3, res%nnode))
+      res%s3(1:2, :) = values(:, res%order)
+      res%s3(3, :) = 0.0_wp
+      call h5_write_real(res%file, field%path, res%s3, res%where, err)
     case default
-      call h5_write_real(res%file, field%path, values, res%where, err)
+      if (allocated(res%sn)) then
+        if (size(res%sn, 1) /= ncomp) deallocate(res%sn)
+      end if
+      if (.not. allocated(res%sn)) allocate(res%sn(ncomp, res%nnode))
+      res%sn = values(:, res%order)
+      call h5_write_real(res%file, field%path, res%sn, res%where, err)
     end select
     if (err%failed()) return
     call dataset_attr_int(res, field%path, 'ncomp', ncomp, err)
@@ -295,29 +412,6 @@ contains
       fr%fields(fr%nfield) = field
     end associate
   end subroutine results_write_nodal
-
-  !> How a nodal field of ncomp components is stored in frame `frame`
-  !> (0-based): path, XDMF kind, stored components.
-  pure function nodal_field(name, ncomp, frame) result(field)
-    character(len=*), intent(in) :: name
-    integer, intent(in) :: ncomp, frame
-    type(xdmf_field_t) :: field
-    field%name = trim(name)
-    field%path = '/frames/' // frame_label(frame) // '/' // field%name
-    select case (ncomp)
-    case (1)
-      field%kind = 'Scalar'
-      field%ncomp = 1
-    case (2)
-      field%kind = 'Vector'
-      field%ncomp = 3
-    case default
-      ! Matrix: a plain multi-component array; stress (sxx, syy, sxy, szz)
-      ! is neither a 3-vector nor a full tensor.
-      field%kind = 'Matrix'
-      field%ncomp = ncomp
-    end select
-  end function nodal_field
 
   !> Stop writing for now: /status = reason (e.g. 'suspended at step N'),
   !> flush and close, and keep the name stem.h5.part so that the file never
@@ -339,102 +433,6 @@ contains
     if (cerr%failed()) call raise_error(err, cerr%code, cerr%message)
     res = results_t()
   end subroutine results_suspend
-
-  !> Reopen stem.h5.part of a suspended or killed run and go on with it, in
-  !> place of results_open and results_write_mesh: keep its first nframe
-  !> frames and drop any later one (written after the checkpoint the run
-  !> resumes from), rebuild the record the XDMF needs (the mesh blocks as
-  !> results_write_mesh got them; each frame with the nodal fields named in
-  !> fields(:) with ncomps(:) components, as results_write_nodal got them),
-  !> and set /status back to 'running'. A missing or unreadable file is
-  !> EXIT_INPUT: the checkpoint cannot be used without it.
-  subroutine results_resume(res, stem, nnode, blocks, fields, ncomps, nframe, err)
-    type(results_t), intent(inout) :: res
-    character(len=*), intent(in) :: stem
-    integer, intent(in) :: nnode
-    type(result_block_t), intent(in) :: blocks(:)
-    character(len=*), intent(in) :: fields(:)
-    integer, intent(in) :: ncomps(:), nframe
-    type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: fmt
-    integer(hsize_t), allocatable :: dims(:)
-    real(wp), allocatable :: times(:)
-    integer :: hdferr, had, f, k, b
-    if (err%failed()) return
-    if (res%is_open) then
-      call raise_error(err, EXIT_INTERNAL, 'results_resume: results file "' // res%part_name // '" is already open')
-      return
-    end if
-    res = results_t()
-    res%stem = trim(stem)
-    res%part_name = res%stem // '.h5.part'
-    res%where = 'results file "' // res%part_name // '"'
-    if (.not. file_exists(res%part_name)) then
-      call raise_error(err, EXIT_INPUT, 'cannot resume: ' // res%where // ' is missing (deleted, or the run ' // &
-        'was started again); run the scene afresh without --restart')
-      return
-    end if
-    call h5_acquire(err)
-    if (err%failed()) return
-    call h5fopen_f(res%part_name, H5F_ACC_RDWR_F, res%file, hdferr)
-    if (hdferr /= 0) then
-      call raise_error(err, EXIT_INPUT, 'cannot reopen ' // res%where // ' to resume (not HDF5, or damaged ' // &
-        'by a hard kill while it was written); run the scene afresh without --restart')
-      call h5_release(err)
-      return
-    end if
-    res%is_open = .true.
-    allocate(res%blocks(size(blocks)), res%frames(max(8, nframe + 8)))
-    ! Checks before any change: a refused file is closed untouched.
-    call h5_read_attr_text(res%file, 'format', fmt, res%where, err)
-    if (.not. err%failed()) then
-      if (fmt /= 'raccord results') call raise_error(err, EXIT_INPUT, res%where // &
-        ' is not a raccord results file (format "' // fmt // '")')
-    end if
-    if (.not. err%failed()) call h5_dims(res%file, '/mesh/x', dims, res%where, err)
-    if (.not. err%failed()) then
-      if (size(dims) /= 2) dims = [0_hsize_t, 0_hsize_t]
-      if (dims(2) /= int(nnode, hsize_t)) call raise_error(err, EXIT_INPUT, res%where // ' holds a mesh of ' // &
-        str(int(dims(2))) // ' nodes, the model has ' // str(nnode) // '; it belongs to another run')
-    end if
-    if (err%failed()) then
-      call h5fclose_f(res%file, hdferr)
-      call h5_release(err)
-      res = results_t()
-      return
-    end if
-    res%nnode = nnode
-    do b = 1, size(blocks)
-      res%blocks(b)%name = blocks(b)%name
-      res%blocks(b)%conn_path = '/mesh/blocks/' // blocks(b)%name // '/connectivity'
-      res%blocks(b)%nen = blocks(b)%nen
-      res%blocks(b)%nel = size(blocks(b)%conn, 2)
-    end do
-    ! Frames: keep 0 .. nframe-1, drop the later ones (also a half-written one).
-    call h5_truncate_growing(res%file, '/frames/times', nframe, had, res%where, err)
-    call h5_truncate_growing(res%file, '/frames/steps', nframe, had, res%where, err)
-    if (err%failed()) return
-    f = nframe
-    do while (h5_link_exists(res%file, '/frames/' // frame_label(f)))
-      call h5_delete_link(res%file, '/frames/' // frame_label(f), res%where, err)
-      if (err%failed()) return
-      f = f + 1
-    end do
-    allocate(times(nframe))
-    call h5_read_real(res%file, '/frames/times', times, res%where, err)
-    if (err%failed()) return
-    do f = 1, nframe
-      res%frames(f)%time = times(f)
-      res%frames(f)%nfield = size(fields)
-      allocate(res%frames(f)%fields(max(4, size(fields))))
-      do k = 1, size(fields)
-        res%frames(f)%fields(k) = nodal_field(fields(k), ncomps(k), f - 1)
-      end do
-    end do
-    res%nframe = nframe
-    call results_set_text(res, 'status', 'running', err)
-    call flush_file(res, 'the resumed file', err)
-  end subroutine results_resume
 
   !> Flush everything written so far to disk (before a checkpoint).
   subroutine results_flush(res, err)
@@ -527,80 +525,6 @@ contains
     call h5_write_text(res%file, full, text, res%where, err)
   end subroutine results_set_text
 
-  !> Finish the file. complete = .true.: /status = 'complete', write the
-  !> XDMF, close, rename to stem.h5 and stem.xmf. complete = .false. (or any
-  !> failure while closing): /status = 'incomplete: ' // reason and the
-  !> names stem.incomplete.h5 / stem.incomplete.xmf. A frame still open is
-  !> ended first. Closing a results_t that is not open does nothing, so
-  !> error paths may always call it.
-  subroutine results_close(res, complete, err, reason)
-    type(results_t), intent(inout) :: res
-    logical, intent(in) :: complete
-    type(error_t), intent(inout) :: err
-    character(len=*), intent(in), optional :: reason
-    type(error_t) :: cerr, step_err
-    character(len=:), allocatable :: why, h5_final, xmf_final, xmf_part
-    logical :: done, have_xmf
-    integer :: hdferr
-    if (.not. res%is_open) return
-    why = 'no reason given'
-    if (present(reason)) then
-      if (len_trim(reason) > 0) why = trim(reason)
-    end if
-    xmf_part = res%stem // '.xmf.part'
-    have_xmf = .false.
-    if (res%in_frame) call results_end_frame(res, cerr)
-    done = complete .and. .not. cerr%failed()
-
-    ! Each step gets a fresh status so that one failure does not skip the
-    ! rest: the file must still be closed and renamed.
-    if (done) then
-      call write_light_data(res, .true., xmf_part, step_err, have_xmf)
-      if (.not. step_err%failed()) call results_set_text(res, 'status', 'complete', step_err)
-      if (step_err%failed()) then
-        done = .false.
-        call raise_error(cerr, step_err%code, step_err%message)
-      end if
-    end if
-    if (.not. done) then
-      if (complete) why = 'closing failed: ' // cerr%message
-      call step_err%clear()
-      call results_set_text(res, 'status', 'incomplete: ' // why, step_err)
-      if (step_err%failed()) call raise_error(cerr, step_err%code, step_err%message)
-      call step_err%clear()
-      call write_light_data(res, .false., xmf_part, step_err, have_xmf)
-      if (step_err%failed()) call raise_error(cerr, step_err%code, step_err%message)
-    end if
-
-    call h5fclose_f(res%file, hdferr)
-    if (hdferr /= 0) then
-      call raise_error(cerr, EXIT_IO, 'cannot close ' // res%where // ' (disk full?)')
-      if (done) then
-        ! The XDMF names stem.h5, which will not exist: drop it.
-        done = .false.
-        call delete_file(xmf_part)
-        have_xmf = .false.
-      end if
-    end if
-    res%is_open = .false.
-    call h5_release(cerr)
-
-    if (done) then
-      h5_final = res%stem // '.h5'
-      xmf_final = res%stem // '.xmf'
-    else
-      h5_final = res%stem // '.incomplete.h5'
-      xmf_final = res%stem // '.incomplete.xmf'
-    end if
-    call rename_file(res%part_name, h5_final, cerr)
-    if (have_xmf) call rename_file(xmf_part, xmf_final, cerr)
-    if (cerr%failed()) then
-      call prefix_error(cerr, 'while closing ' // res%where)
-      call raise_error(err, cerr%code, cerr%message)
-    end if
-    res = results_t()
-  end subroutine results_close
-
   ! --- private -----------------------------------------------------------
 
   subroutine write_array_1d(res, path, values, err)
@@ -621,53 +545,17 @@ contains
     call h5_write_real(res%file, absolute(path), values, res%where, err)
   end subroutine write_array_2d
 
-  !> Write the XDMF to xmf_part for the final HDF5 name implied by `done`.
-  subroutine write_light_data(res, done, xmf_part, err, written)
-    type(results_t), intent(in) :: res
-    logical, intent(in) :: done
-    character(len=*), intent(in) :: xmf_part
-    type(error_t), intent(inout) :: err
-    logical, intent(out) :: written
-    character(len=:), allocatable :: h5_name
-    type(error_t) :: werr
-    if (done) then
-      h5_name = base_name(res%stem) // '.h5'
-    else
-      h5_name = base_name(res%stem) // '.incomplete.h5'
-    end if
-    call write_xdmf(xmf_part, h5_name, max(res%nnode, 0), res%blocks, res%frames, res%nframe, werr)
-    written = .not. werr%failed()
-    if (.not. written) then
-      call delete_file(xmf_part)
-      call raise_error(err, werr%code, werr%message)
-    end if
-  end subroutine write_light_data
-
-  !> True when the results file is open; otherwise an error naming the caller.
-  logical function usable(res, caller, err)
-    type(results_t), intent(in) :: res
-    character(len=*), intent(in) :: caller
-    type(error_t), intent(inout) :: err
-    usable = .false.
-    if (err%failed()) return
-    if (.not. res%is_open) then
-      call raise_error(err, EXIT_INTERNAL, caller // ': the results file is not open (call results_open)')
-      return
-    end if
-    usable = .true.
-  end function usable
-
-  !> Flush to disk so that a killed run keeps everything written so far.
-  subroutine flush_file(res, what, err)
-    type(results_t), intent(in) :: res
-    character(len=*), intent(in) :: what
-    type(error_t), intent(inout) :: err
-    integer :: hdferr
-    if (err%failed()) return
-    call h5fflush_f(res%file, H5F_SCOPE_GLOBAL_F, hdferr)
-    if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot flush ' // what // ' to ' // res%where &
-      // ' (disk full?)')
-  end subroutine flush_file
+  !> row(conn), element by element (a vector subscript must be rank 1).
+  pure function rows_of(row, conn) result(c)
+    integer, intent(in) :: row(:), conn(:,:)
+    integer :: c(size(conn, 1), size(conn, 2))
+    integer :: i, j
+    do j = 1, size(conn, 2)
+      do i = 1, size(conn, 1)
+        c(i, j) = row(conn(i, j))
+      end do
+    end do
+  end function rows_of
 
   !> Blocks: valid unique names, nen 4 or 8, conn (nen, nel) within 1..nnode.
   subroutine check_blocks(blocks, nnode, err)
@@ -715,16 +603,6 @@ contains
     end do
   end subroutine check_blocks
 
-  !> A name becomes one HDF5 link: not empty, no '/'.
-  subroutine check_name(name, what, err)
-    character(len=*), intent(in) :: name, what
-    type(error_t), intent(inout) :: err
-    if (len_trim(name) == 0 .or. index(name, '/') > 0 .or. trim(name) == '.') then
-      call raise_error(err, EXIT_INPUT, 'invalid ' // what // ' name "' // trim(name) &
-        // '" for the results file: use a non-empty name without "/"')
-    end if
-  end subroutine check_name
-
   !> Put an integer attribute on an existing dataset.
   subroutine dataset_attr_int(res, path, name, value, err)
     type(results_t), intent(in) :: res
@@ -755,18 +633,6 @@ contains
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot open group "' // path // '" in ' // res%where)
   end subroutine h5gopen_checked
 
-  !> A path made absolute ('a/b' -> '/a/b'), trailing blanks removed.
-  pure function absolute(path) result(s)
-    character(len=*), intent(in) :: path
-    character(len=:), allocatable :: s
-    s = trim(adjustl(path))
-    if (len(s) == 0) then
-      s = '/'
-    else if (s(1:1) /= '/') then
-      s = '/' // s
-    end if
-  end function absolute
-
   !> Folder part of a path ('out/run' -> 'out', 'run' -> '').
   pure function folder_of(path) result(s)
     character(len=*), intent(in) :: path
@@ -776,10 +642,4 @@ contains
     s = path(1:max(k - 1, 0))
   end function folder_of
 
-  !> File part of a path ('out/run' -> 'run').
-  pure function base_name(path) result(s)
-    character(len=*), intent(in) :: path
-    character(len=:), allocatable :: s
-    s = path(index(path, '/', back=.true.) + 1:)
-  end function base_name
 end module raccord_results

@@ -92,7 +92,8 @@ help)
     run "$opt"
     expect_code 0
     expect_text "$work/stdout.txt" 'usage: raccord [options] SCENE' "stdout of $opt"
-    for word in --check --output --quiet --verbose --version --wall-clock --restart 'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure'; do
+    for word in --check --output --quiet --verbose --version --wall-clock --restart 'exit codes: 0 success, 1 bad command line, 2 bad scene or mesh, 3 numerical failure' \
+        OMP_NUM_THREADS RACCORD_WALLCLOCK_SECONDS 'default' 'results/NAME' '5 stopped at the wall-clock limit'; do
       expect_text "$work/stdout.txt" "$word" "stdout of $opt"
     done
   done
@@ -331,6 +332,55 @@ plot_history)
   (cd "$work" && sh "$extra/plot-history.sh" out/bar_coarse svg > plot.txt 2>&1)
   code=$?
   expect_code 2
+  ;;
+
+check_contact)
+  # --check on a contact deck (EXTRA): the plan names the matching and the
+  # multiplier space without padding, and the cost line times the contact
+  # work of the real step (a positive contact share in the estimate).
+  run --check "$extra"
+  expect_code 0
+  expect_text "$work/stdout.txt" ', mortar matching, P1 multipliers (linear, at the slave nodes), mu = 0,' "the plan"
+  if grep -q 'mortar  ' "$work/stdout.txt"; then fail "blank padding after the method: $(grep 'mortar  ' "$work/stdout.txt")"
+  else pass "no blank padding in the plan"; fi
+  contact=$(awk '/^cost/ { for (i = 1; i < NF; i++) if ($i == "contact" && $(i+2) == "s,") print $(i+1) }' "$work/stdout.txt")
+  total=$(awk '/^cost/ { for (i = 1; i < NF; i++) if ($i == "time" && $(i-1) == "run") print $(i+1) }' "$work/stdout.txt")
+  if awk -v c="${contact:-0}" -v t="${total:-0}" 'BEGIN { exit !(c > 0 && t > c) }'; then
+    pass "estimate $total s includes contact $contact s"
+  else fail "cost line without a contact share: $(grep '^cost' "$work/stdout.txt")"; fi
+  ;;
+
+progress_live)
+  # Progress lines reach a redirected stdout while the run goes on (stdout
+  # is flushed line by line), and the log lines carry a time stamp and the
+  # host. EXTRA: a paper deck that runs for several seconds; it is stopped
+  # as soon as its log shows a progress line.
+  deck=$(basename "$extra")
+  cp "$extra" "$work/$deck"
+  cp "$(dirname "$extra")"/paper_q4*.msh "$work/"
+  if grep -q '^&output' "$work/$deck"; then
+    sed -i 's/^&output/\&output progress_seconds = 0.2,/' "$work/$deck"
+  else
+    printf '&output progress_seconds = 0.2 /\n' >> "$work/$deck"
+  fi
+  log=$work/out/${deck%.nml}.log
+  (cd "$work" && exec "$raccord" --output out "$deck" > "$work/stdout.txt" 2> "$work/stderr.txt") &
+  pid=$!
+  n=0
+  while [ $n -lt 300 ] && ! grep -q 'info \[progress\]' "$log" 2>/dev/null; do
+    sleep 0.1
+    n=$((n + 1))
+  done
+  # The log line is written after the stdout line: both must be there now.
+  if grep -q 'info \[progress\]' "$log" 2>/dev/null; then pass "the log shows a progress line"
+  else fail "no progress line in the log after 30 s"; fi
+  if kill -0 "$pid" 2>/dev/null; then pass "the run is still going"; else fail "the run ended before the check"; fi
+  expect_text "$work/stdout.txt" 'info [progress] step ' "the redirected stdout while running"
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  if grep -qE '^[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2} info \[raccord\] raccord .*, host ' "$log"; then
+    pass "the first log line has a time stamp and the host"
+  else fail "first log line: $(head -n 1 "$log")"; fi
   ;;
 
 huge_values)

@@ -14,6 +14,7 @@ program test_results_io
     new_test('results: complete close and layout', test_complete_layout), &
     new_test('results: XDMF references exist', test_xdmf_references), &
     new_test('results: incomplete close', test_incomplete), &
+    new_test('results: node order, body grids, surfaces', test_order_surfaces), &
     new_test('results: misuse and bad paths', test_results_errors), &
     new_test('history: header, rows, names', test_history)])
 
@@ -275,7 +276,13 @@ contains
     call check(failure, text == 'complete', '/status is "complete", got "' // text // '"')
     text = read_text(file, '/version')
     call check(failure, text == 'raccord test 0.0', '/version text, got "' // text // '"')
-    call check(failure, read_int_attr(file, '/', 'format_version') == 1, 'format_version attribute')
+    call check(failure, read_int_attr(file, '/', 'format_version') == 2, 'format_version attribute')
+    ! The blocks' nodes are contiguous already: identity order, one range each.
+    call read_int_2d(file, '/mesh/blocks/right/local_connectivity', igot2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(igot2(:, 1) == [0, 1, 2, 3, 4, 5, 6, 7]), 'right local connectivity from its first row')
+    call check(failure, read_int_attr(file, '/mesh/blocks/right', 'first_row') == 6, 'right first_row')
+    call check(failure, read_int_attr(file, '/mesh/blocks/right', 'row_count') == 8, 'right row_count')
 99  call h5fclose_f(file, hdferr)
     call h5_release(err)
   end subroutine test_complete_layout
@@ -307,12 +314,16 @@ contains
     call check(failure, count_of(xml, 'AttributeType="Vector"') == 6, 'displacement as a vector')
     call check(failure, count_of(xml, '<Xdmf') == 1 .and. count_of(xml, '</Xdmf>') == 1, 'one Xdmf element')
     do f = 0, 2
-      write(path, '(a,i6.6,a)') 'run.h5:/frames/', f, '/displacement<'
-      call check(failure, count_of(xml, trim(path)) == 2, 'XDMF references ' // trim(path))
-      write(path, '(a,i6.6,a)') 'run.h5:/frames/', f, '/stress<'
-      call check(failure, count_of(xml, trim(path)) == 2, 'XDMF references ' // trim(path))
+      ! Each block grid takes its own rows: left 0..5, right 6..13 of 14.
+      write(path, '(a,i6.6,a)') 'run.h5:/frames/', f, '/displacement|0 0:1 1:6 3:14 3<'
+      call check(failure, count_of(xml, trim(path)) == 1, 'XDMF references ' // trim(path))
+      write(path, '(a,i6.6,a)') 'run.h5:/frames/', f, '/stress|6 0:1 1:8 4:14 4<'
+      call check(failure, count_of(xml, trim(path)) == 1, 'XDMF references ' // trim(path))
+      write(path, '(a,i6.6,a)') 'run.h5:/frames/', f, '/pressure|6:1:8:14<'
+      call check(failure, count_of(xml, trim(path)) == 1, 'XDMF references ' // trim(path))
     end do
-    call check(failure, count_of(xml, 'run.h5:/mesh/blocks/right/connectivity<') == 3, 'right block referenced')
+    call check(failure, count_of(xml, 'run.h5:/mesh/x|6 0:1 1:8 2:14 2<') == 3, 'right block geometry: its 8 rows')
+    call check(failure, count_of(xml, 'run.h5:/mesh/blocks/right/local_connectivity<') == 3, 'right block referenced')
     call h5_acquire(err)
     call h5fopen_f('out_complete/run.h5', H5F_ACC_RDONLY_F, file, hdferr)
     if (hdferr /= 0) then
@@ -366,7 +377,7 @@ contains
     call check(failure, .not. file_exists('out_complete/run.h5.part'), 'no .part after close')
     if (allocated(failure)) return
     xml = read_whole('out_complete/run.incomplete.xmf')
-    call check(failure, count_of(xml, 'run.incomplete.h5:/frames/000001/displacement<') == 2, &
+    call check(failure, count_of(xml, 'run.incomplete.h5:/frames/000001/displacement|') == 2, &
       'the incomplete XDMF names run.incomplete.h5 and keeps the last frame')
     call check(failure, count_of(xml, 'run.h5:') == 0, 'the incomplete XDMF never names run.h5')
     call h5_acquire(err)
@@ -386,6 +397,106 @@ contains
     ! Restore the complete run for the xdmf_wellformed test.
     call write_complete_run(res, .true., err)
   end subroutine test_incomplete
+
+  !> Blocks whose nodes interleave in the model, a node in no block, and a
+  !> contact surface: rows grouped by block, every dataset mapped back,
+  !> the XDMF's hyperslabs and surface grid, the meshio index.
+  subroutine test_order_surfaces(failure)
+    use raccord_kinds, only: wp
+    use raccord_error, only: error_t, EXIT_INTERNAL
+    use raccord_files, only: file_exists
+    use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
+      results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, results_close, &
+      results_add_surface, results_write_surface_frame
+    use raccord_h5, only: h5_acquire, h5_release
+    use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
+    type(failure_t), allocatable, intent(out) :: failure
+    type(results_t) :: res
+    type(error_t) :: err
+    real(wp) :: x(2, 9), u(2, 9), xy(2, 3), vals(3, 2)
+    real(wp), allocatable :: got2(:,:), got1(:)
+    integer, allocatable :: igot2(:,:), igot1(:)
+    type(result_block_t) :: blocks(2)
+    integer, parameter :: order(9) = [2, 4, 6, 8, 1, 3, 5, 7, 9]
+    character(len=:), allocatable :: xml
+    integer(hid_t) :: file
+    integer :: i, hdferr
+    do i = 1, 9
+      x(:, i) = [real(i, wp), -0.5_wp*i]
+      u(:, i) = [1.0e-3_wp*i, 2.0e-3_wp*i*i]
+    end do
+    blocks(1)%name = 'A'
+    blocks(1)%nen = 4
+    blocks(1)%conn = reshape([2, 4, 6, 8], [4, 1])
+    blocks(2)%name = 'B'
+    blocks(2)%nen = 4
+    blocks(2)%conn = reshape([1, 3, 5, 7], [4, 1])
+    xy = reshape([0.0_wp, 1.0_wp, 0.5_wp, 1.1_wp, 1.0_wp, 1.2_wp], [2, 3])
+    vals = reshape([10.0_wp, 20.0_wp, 30.0_wp, -1.0_wp, -2.0_wp, -3.0_wp], [3, 2])
+    call results_open(res, 'out_order/run2', err)
+    call results_write_mesh(res, x, blocks, err)
+    call results_write_node_set(res, 'pair', [1, 2], err)
+    call results_add_surface(res, 'contact1_top', '/contact/pair_1', '', reshape([1, 2, 2, 3], [2, 2]), 3, &
+      [character(len=8) :: 'pressure', 'gap'], err)
+    call results_begin_frame(res, 0, 0.25_wp, err)
+    call results_write_nodal(res, 'u', u, err)
+    call check(failure, .not. err%failed(), 'writing: ' // message(err))
+    call results_write_surface_frame(res, 2, xy, vals, err)
+    call check(failure, err%code == EXIT_INTERNAL, 'a surface written out of order is refused')
+    call err%clear()
+    call results_write_surface_frame(res, 1, xy, vals, err)
+    call results_end_frame(res, err)
+    call results_close(res, .true., err)
+    call check(failure, .not. err%failed(), 'writing and closing: ' // message(err))
+    call check(failure, file_exists('out_order/run2.meshio.xmf'), 'the meshio index is written')
+    if (allocated(failure)) return
+    call h5_acquire(err)
+    call h5fopen_f('out_order/run2.h5', H5F_ACC_RDONLY_F, file, hdferr)
+    if (hdferr /= 0) then
+      call fail_now(failure, 'cannot open out_order/run2.h5')
+      return
+    end if
+    call read_real_2d(file, '/mesh/x', got2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(got2 == x(:, order)), '/mesh/x rows: block A, block B, then the free node')
+    call read_int_1d(file, '/mesh/node_index', igot1, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(igot1 == order - 1), '/mesh/node_index maps rows to model nodes')
+    call read_int_2d(file, '/mesh/blocks/B/connectivity', igot2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(igot2(:, 1) == [4, 5, 6, 7]), 'B connectivity in rows')
+    call read_int_2d(file, '/mesh/blocks/B/local_connectivity', igot2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(igot2(:, 1) == [0, 1, 2, 3]), 'B local connectivity')
+    call check(failure, read_int_attr(file, '/mesh/blocks/B', 'first_row') == 4, 'B first_row')
+    call read_int_1d(file, '/mesh/node_sets/pair', igot1, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(igot1 == [4, 0]), 'node set in rows')
+    call read_real_2d(file, '/frames/000000/u', got2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(got2(1:2, :) == u(:, order)), 'nodal field in rows')
+    call read_int_2d(file, '/contact/pair_1/connectivity', igot2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(igot2 == reshape([0, 1, 1, 2], [2, 2])), 'surface connectivity 0-based')
+    call read_real_2d(file, '/contact/pair_1/frame_000000/xy', got2, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(got2 == xy), 'surface coordinates')
+    call read_real_1d(file, '/contact/pair_1/frame_000000/gap', got1, failure)
+    if (allocated(failure)) goto 99
+    call check(failure, all(got1 == vals(:, 2)), 'surface field gap')
+    xml = read_whole('out_order/run2.xmf')
+    call check(failure, count_of(xml, 'run2.h5:/mesh/x|4 0:1 1:4 2:9 2<') == 1, 'B geometry: rows 4..7 of 9')
+    call check(failure, count_of(xml, 'TopologyType="Polyline"') == 1, 'the surface grid has line elements')
+    call check(failure, count_of(xml, 'run2.h5:/contact/pair_1/frame_000000/pressure<') == 1, &
+      'the surface grid has the pressure')
+    call check_data_items(failure, xml, 'run2.h5', file)
+    xml = read_whole('out_order/run2.meshio.xmf')
+    call check(failure, count_of(xml, '<Topology') == 2 .and. count_of(xml, 'run2.h5:/mesh/x<') == 1 .and. &
+      count_of(xml, 'run2.h5:/frames/000000/u<') == 1, 'meshio index: whole mesh, one topology per block, the field')
+    call check_data_items(failure, xml, 'run2.h5', file)
+99  call h5fclose_f(file, hdferr)
+    call h5_release(err)
+  end subroutine test_order_surfaces
 
   subroutine test_results_errors(failure)
     use raccord_kinds, only: wp
@@ -584,6 +695,8 @@ contains
       call check(failure, content(1:colon - 1) == h5name, 'DataItem names "' // content(1:colon - 1) &
         // '", expected "' // h5name // '"')
       path = content(colon + 1:)
+      ! A hyperslab "path|start:stride:count:dims" names the dataset before '|'.
+      if (index(path, '|') > 0) path = path(1:index(path, '|') - 1)
       ! Every link on the path, then the object itself.
       exists = .true.
       do c = 2, len(path) + 1
