@@ -8,7 +8,7 @@
 load 'common.gp'
 # four panels: a larger page than common.gp's
 if (format eq 'png') {
-  set terminal pngcairo size 1200,880 enhanced font ',10' linewidth 1.2
+  set terminal pngcairo size 1080,790 enhanced font ',9' linewidth 1.1
 } else {
   set terminal pdfcairo size 8in,5.9in enhanced font ',8'
 }
