@@ -10,7 +10,8 @@
 # RUNS  folder of the runs: RUNS/<deck>/ (the folder tools/paper-figures.sh
 #       draws from; existing runs of these decks are replaced)
 # PAIR  any of nts_slave_block nts_slave_disc mortar_p1_slave_block
-#       mortar_p1_slave_disc (default: all four)
+#       mortar_p1_slave_disc (default: all four; fine mesh), or
+#       coarse_mortar_p1_slave_block (the coarse pair of tests/finite)
 #
 # Prints one line per run: wall and CPU (user + system) seconds of the
 # raccord process (/usr/bin/time when present, else the shell's date for
@@ -50,6 +51,7 @@ for p in $pairs; do
   case "$p" in
     nts_*) small=fig1b_$p ;;
     mortar_p1_*) small=fig2a_$p ;;
+    coarse_mortar_p1_slave_block) small=reg_mortar_p1_slave_block ;;
     *) echo "finite-cost: unknown pair '$p'" >&2; exit 2 ;;
   esac
   load=$(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo '?')
