@@ -10,8 +10,14 @@
 #   OUTDIR/numbers.txt       the numbers of doc/reproduction.md (postproc/paper/numbers.sh)
 #   OUTDIR/calculix/         the CalculiX run of Fig. 1(b) (tools/calculix/fig1b-ccx.sh),
 #                            when ccx is installed
+#   OUTDIR/calculix-finite/  the CalculiX run with NLGEOM and neo-Hooke bodies
+#                            (tools/calculix/finite-ccx.sh), figure 'finite' only
+#   OUTDIR/finite-numbers.txt  the numbers of the finite-strain section of
+#                            doc/reproduction.md (postproc/paper/finite-numbers.sh)
 # FIGURE is any of fig1b fig2a fig2b fig3 fig4a fig4b cycle numbers (default:
-# all of them). Builds raccord (Release, in $RACCORD_BUILD, default build/)
+# all of them), or finite: the paper's test with finite strain (neo-Hooke
+# bodies) beside small strain, not drawn by default (its four runs take
+# about 10 times the CPU of the small-strain ones). Builds raccord (Release, in $RACCORD_BUILD, default build/)
 # when needed, runs only the decks whose results are missing or older than
 # their deck, two at a time, then draws. Rerunning does only what is missing;
 # delete OUTDIR/runs/<deck> to force a run. Exit 0 when every figure was
@@ -41,7 +47,9 @@ for f in $figs; do
       fig3_mortar_p0_mu020 fig3_mortar_p1_mu020 fig3_mortar_p0_mu050 fig3_mortar_p1_mu050
       fig4a_q4_mortar_p1 fig4a_q8_mortar_p1 fig4b_q8_mortar_p0_mu020 fig4b_q8_mortar_p1_mu020
       slow_fig2a_mortar_p1_slave_block slow_fig3_mortar_p1_mu020" ;;
-    *) echo "paper-figures: unknown figure '$f' (fig1b fig2a fig2b fig3 fig4a fig4b cycle numbers)" >&2; exit 2 ;;
+    finite) d="fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc
+      finite_nts_slave_block finite_nts_slave_disc finite_mortar_p1_slave_block finite_mortar_p1_slave_disc" ;;
+    *) echo "paper-figures: unknown figure '$f' (fig1b fig2a fig2b fig3 fig4a fig4b cycle numbers finite)" >&2; exit 2 ;;
   esac
   decks="$decks $d"
 done
@@ -91,12 +99,22 @@ case " $figs " in
       sh "$root/tools/calculix/fig1b-ccx.sh" "$out/calculix" || echo "paper-figures: the CalculiX comparison failed; Fig. 1(b) is drawn without it" >&2
     fi ;;
 esac
+# ... and with NLGEOM for the finite-strain figure, beside the small-strain one.
+case " $figs " in
+  *" finite "*)
+    if [ ! -f "$out/calculix/ccx_pressure.txt" ] || [ "$root/tools/calculix/fig1b-ccx.sh" -nt "$out/calculix/ccx_pressure.txt" ]; then
+      sh "$root/tools/calculix/fig1b-ccx.sh" "$out/calculix" || echo "paper-figures: the small-strain CalculiX run failed; the finite figure is drawn without it" >&2
+    fi
+    if [ ! -f "$out/calculix-finite/ccx_pressure.txt" ] || [ "$root/tools/calculix/finite-ccx.sh" -nt "$out/calculix-finite/ccx_pressure.txt" ]; then
+      sh "$root/tools/calculix/finite-ccx.sh" "$out/calculix-finite" || echo "paper-figures: the finite-strain CalculiX run failed; the finite figure is drawn without it" >&2
+    fi ;;
+esac
 
 # 4. Figures, each in PNG and PDF.
 for f in $figs; do
   [ "$f" = numbers ] && continue
   for fmt in png pdf; do
-    if ! gnuplot -e "res='$out/runs'; figdir='$out/figures'; ccx='$out/calculix/ccx_pressure.txt'; format='$fmt'" \
+    if ! gnuplot -e "res='$out/runs'; figdir='$out/figures'; ccx='$out/calculix/ccx_pressure.txt'; ccxf='$out/calculix-finite/ccx_pressure.txt'; format='$fmt'" \
         -e "cd '$root/postproc/paper'" "$root/postproc/paper/$f.gp"; then
       echo "paper-figures: $f.$fmt failed" >&2
       status=1
@@ -113,6 +131,17 @@ case " $figs " in
       echo "paper-figures: wrote $out/numbers.txt"
     else
       echo "paper-figures: numbers.sh failed" >&2
+      status=1
+    fi ;;
+esac
+case " $figs " in
+  *" finite "*)
+    if sh "$root/postproc/paper/finite-numbers.sh" "$out/runs" "$out/calculix-finite/ccx_pressure.txt" \
+        "$out/calculix/ccx_pressure.txt" > "$out/finite-numbers.txt.tmp"; then
+      mv "$out/finite-numbers.txt.tmp" "$out/finite-numbers.txt"
+      echo "paper-figures: wrote $out/finite-numbers.txt"
+    else
+      echo "paper-figures: finite-numbers.sh failed" >&2
       status=1
     fi ;;
 esac

@@ -18,8 +18,23 @@ T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")   # end of the cycle
 CYCLE_T=$(awk "BEGIN { for (k = 0; k <= 40; k++) printf \"%s%.6e\", (k ? \", \" : \"\"), k*$T/20 }")
 CYCLE_A=$(awk "BEGIN { for (k = 0; k <= 40; k++) printf \"%s%.6f\", (k ? \", \" : \"\"), (1 - cos(3.14159265358979*k/20))/2 }")
 
-# deck NAME MESH TITLE SLAVE MASTER METHOD MULTIPLIER FRICTION
+# deck NAME MESH TITLE SLAVE MASTER METHOD MULTIPLIER FRICTION [KINEMATICS]
+# KINEMATICS 'finite' makes both bodies neo-Hooke, finite strain (the
+# decks finite_*: doc/reproduction.md, "The paper's test with finite
+# strain"); left out, both bodies are small strain with Hooke's law.
 deck() {
+  if [ "${9:-small}" = finite ]; then
+    FIN="
+  kinematics = 'finite', material = 'neo_hooke'"
+    FINNOTE="
+! Finite strain: both bodies neo-Hooke (W = C10 (Ibar1 - 3) + (J - 1)^2 / D1,
+! C10 = G/2, D1 = 2/K from young and poisson; total Lagrangian, mean
+! dilatation on Q4), as CalculiX with NLGEOM and *HYPERELASTIC, NEO HOOKE
+! (tools/calculix/finite-ccx.sh)."
+  else
+    FIN=""
+    FINNOTE=""
+  fi
   cat > "$1.nml" <<EOD
 ! Baillet & Sassi (2003), section 4: $3.
 ! Disc part (radius 1 mm, E1 = 70000 MPa) driven 0.1581 mm into a block
@@ -30,7 +45,7 @@ deck() {
 ! alpha = $ALPHA 1/s make the run quasi-static (doc/scenes.md); the disc,
 ! driven rigidly from its top, is not damped (mass damping would drag it).
 ! Maximum indentation at t = T,
-! which is result frame 20 of 40. Units: mm, s, N, MPa, t/mm^3.
+! which is result frame 20 of 40. Units: mm, s, N, MPa, t/mm^3.$FINNOTE
 ! Written by make_decks.sh; edit that script, not this file.
 &run
   title = 'paper: $3'
@@ -41,12 +56,12 @@ deck() {
 &body
   name = 'disc', elset = 'disc'
   young = 70000.0, poisson = 0.3, density = 2.7e-9
-  hypothesis = 'plane_strain'
+  hypothesis = 'plane_strain'$FIN
 /
 &body
   name = 'block', elset = 'block'
   young = 7000.0, poisson = 0.3, density = 1.2e-9
-  hypothesis = 'plane_strain', damping = $ALPHA
+  hypothesis = 'plane_strain', damping = $ALPHA$FIN
 /
 &amplitude
   name = 'cycle'
@@ -108,3 +123,12 @@ deck reg_mortar_p1_mu020       $C "regression, coarse, mortar P1, mu = 0.2, slav
 # polygonal arc's geometric error lets contact give back 1.6e-3 of the peak
 # internal energy (4.5e-5 here, 2.9e-5 on the fine mesh; doc/verification.md).
 deck reg_nts_slave_disc_mid    paper_q4.msh "regression, mid mesh, node-to-segment, slave = disc arc"  disc_arc block_top node_to_segment P1 0.0
+# Finite strain (issue #13): the Fig. 1(b) and Fig. 2(a) scenes, same fine
+# mesh, both bodies neo-Hooke; profiles beside the small-strain ones in
+# postproc/paper/finite.gp.
+deck finite_nts_slave_block       $F "finite strain, node-to-segment, slave = block top" block_top disc_arc node_to_segment P1 0.0 finite
+deck finite_nts_slave_disc        $F "finite strain, node-to-segment, slave = disc arc"  disc_arc block_top node_to_segment P1 0.0 finite
+deck finite_mortar_p1_slave_block $F "finite strain, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 finite
+deck finite_mortar_p1_slave_disc  $F "finite strain, mortar P1, slave = disc arc"  disc_arc block_top mortar P1 0.0 finite
+# ... and on the coarse mesh for tests/finite (test_finite_paper), beside reg_mortar_p1_slave_block
+deck finite_coarse_mortar_p1_slave_block $C "finite strain, coarse, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 finite

@@ -100,27 +100,8 @@ fi
 
 # Pressure at the last time of the step, mapped from the expanded nodes back
 # to the mesh nodes, at the deformed x = x0 + ux of each block-top node.
-if ! awk '
-  FNR == 1 { file++ }
-  file == 1 && /^\*NODE$/ { innode = 1; next }
-  file == 1 && /^\*NSET, NSET=block_top$/ { inset = 1; innode = 0; next }
-  file == 1 && /^\*/ { innode = 0; inset = 0; next }
-  file == 1 && innode { split($0, a, /, */); x0[a[1] + 0] = a[2]; if (a[1] + 0 > nk) nk = a[1] + 0; next }
-  file == 1 && inset { n = split($0, a, /, */); for (k = 1; k <= n; k++) if (a[k] != "") top[a[k] + 0] = 1; next }
-  file == 2 && /displacements \(vx,vy,vz\) for set BLOCK_TOP/ { blk = "u"; t = $NF; next }
-  file == 2 && /contact stress/ { blk = "p"; t = $NF; next }
-  file == 2 && /^ *$/ { next }
-  file == 2 && NF == 4 && $1 ~ /^[0-9]+$/ {
-    if (blk == "u") ux[t, $1 + 0] = $2
-    if (blk == "p") { i = int(($1 - nk - 1) / 3) + 1; p[t, i] = $2; seen[t, i] = $1 }
-    last = t; next
-  }
-  file == 2 { blk = "" }
-  END {
-    for (k in seen) { split(k, b, SUBSEP); if (b[1] == last && !(b[2] in top)) { printf "fig1b-ccx: contact node %s maps to mesh node %s, not a block-top node; the node mapping does not hold for this ccx\n", seen[k], b[2] > "/dev/stderr"; exit 1 } }
-    print "# CalculiX node-to-surface, slave = block top, time " last ": x (mm, deformed), pressure (MPa)"
-    for (n in top) printf "%.10g %.10g\n", x0[n] + ux[last, n], ((last, n) in p) ? p[last, n] : 0
-  }' mesh.inp fig1b.dat > ccx_pressure.tmp; then
+if ! awk -v what='node-to-surface, slave = block top' -f "$root/tools/calculix/ccx-pressure.awk" \
+    mesh.inp fig1b.dat > ccx_pressure.tmp; then
   rm -f ccx_pressure.tmp
   exit 1
 fi
