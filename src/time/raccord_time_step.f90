@@ -10,7 +10,7 @@ module raccord_time_step
   use raccord_model, only: model_t
   use raccord_scene, only: scene_t
   use raccord_state, only: state_t
-  use raccord_material, only: KIN_FINITE
+  use raccord_material, only: KIN_FINITE, MAT_SVK
   use raccord_elastic_block, only: watch_w2, watch_inverted
   use raccord_finite_kernel, only: block_chunk_len => fin_chunk_len
   use raccord_error, only: EXIT_NUMERIC
@@ -140,16 +140,20 @@ contains
     type(error_t), intent(inout) :: err
     integer :: ib, k, e
     real(wp) :: jmin
+    character(len=:), allocatable :: hint
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
         if (model%bodies(ib)%blocks(k)%kinematics /= KIN_FINITE) cycle
         call watch_inverted(state%watch(k, ib), e, jmin)
         if (e == 0) cycle
+        hint = ''
+        if (model%bodies(ib)%blocks(k)%material == MAT_SVK) hint = ', or use neo_hooke: svk softens and ' // &
+          'collapses in strong compression'
         call raise_error(err, EXIT_NUMERIC, 'element ' // str(model%bodies(ib)%blocks(k)%ids(e)) // &
           ' of body ''' // model%bodies(ib)%name // ''' inverted (J = ' // str(jmin, 4) // &
           ' <= 0 at a Gauss point) at t = ' // str(state%time) // ' (step ' // str(state%step) // &
           '). The deformation is beyond what the mesh can follow: refine it there, lower the load or ' // &
-          'its rate, or check the material (svk softens and collapses in strong compression)')
+          'its rate, or make the softer surface the contact slave' // hint)
         return
       end do
     end do
