@@ -132,7 +132,10 @@ module raccord_elastic_block
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
     ! Finite strain only (Q4 and Q8)
-    real(wp), allocatable, private :: jinv(:,:,:,:)  !< (chunk_len, 4, ngp, nchunk) J0^-1, column-major
+    !> (chunk_len, 4, ngp, nchunk) reference geometry of the finite kernel:
+    !> Q8, J0^-1 column-major per Gauss point; Q4, the exact split of the
+    !> bilinear gradients, grad N_a = b_a + gamma_a grad h (raccord_finite_kernel)
+    real(wp), allocatable, private :: pg(:,:,:,:)
     real(wp), allocatable, private :: cw(:,:,:)      !< (chunk_len, ngp, nchunk) c = w det J0 thickness
     real(wp), allocatable, private :: vol0(:,:)      !< (chunk_len, nchunk) reference volume V_e
     real(wp), allocatable, private :: diag(:,:,:)    !< (chunk_len, 4, nchunk) X3 - X1, X4 - X2
@@ -575,10 +578,10 @@ contains
           case (KERN_Q8)
             call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
           case (KERN_FINITE_Q4)
-            call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%jinv(:, :, :, ic), &
+            call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_FINITE_Q8)
-            call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%jinv(:, :, :, ic), &
+            call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
           end select
           if (watched .and. blk%kinematics == KIN_FINITE) then

@@ -5,6 +5,7 @@
 !> The procedures the parent declares are defined here with
 !> `module procedure`.
 submodule (raccord_elastic_block) raccord_elastic_block_finite
+  use raccord_finite_kernel, only: q4h_row, q4h_col
   implicit none
 
 contains
@@ -60,6 +61,7 @@ contains
   !> stable step (at F = I both laws have Hooke's tangent).
   module procedure make_finite
     character(len=*), parameter :: where = 'make_finite: '
+    real(wp) :: pq4(4, 4)
     integer :: e, g, ic, il, stat
     character(len=256) :: msg
     real(wp) :: x1(2), x2(2), x3(2), x4(2)
@@ -83,9 +85,9 @@ contains
     blk%density = density
     blk%moduli = make_moduli(blk%young, blk%poisson)
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
-    if (.not. allocated(blk%h)) call init_gauss_maps(blk, x, err)
+    if (blk%etype /= ELEM_Q4 .and. .not. allocated(blk%h)) call init_gauss_maps(blk, x, err)
     if (err%failed()) return
-    allocate(blk%jinv(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
+    allocate(blk%pg(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
       blk%vol0(chunk_len, blk%nchunk), &
       blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
     if (stat /= 0) then
@@ -94,20 +96,30 @@ contains
       return
     end if
     ! padding lanes of the last chunk: a unit element, never scattered
-    blk%jinv = 0.0_wp
-    blk%jinv(:, 1, :, :) = 1.0_wp
-    blk%jinv(:, 4, :, :) = 1.0_wp
+    blk%pg = 0.0_wp
+    if (blk%etype /= ELEM_Q4) then
+      blk%pg(:, 1, :, :) = 1.0_wp
+      blk%pg(:, 4, :, :) = 1.0_wp
+    end if
     blk%cw = 1.0_wp
     blk%vol0 = 1.0_wp
     blk%diag = 1.0_wp
     do e = 1, blk%nel
       ic = (e - 1)/chunk_len + 1
       il = e - (ic - 1)*chunk_len
-      do g = 1, blk%ngp
-        ! J0^-1 = H / sqrt(c), c (init_gauss_maps)
-        blk%jinv(il, :, g, ic) = blk%h(il, :, g, ic)/sqrt(blk%c(g, e))
-        blk%cw(il, g, ic) = blk%c(g, e)
-      end do
+      if (blk%etype == ELEM_Q4) then
+        call q4_split(blk%geo(:, e), blk%gxi, pq4)
+        blk%pg(il, :, :, ic) = pq4
+        do g = 1, blk%ngp
+          blk%cw(il, g, ic) = blk%wts(g)*blk%thickness*q4_detj(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
+        end do
+      else
+        do g = 1, blk%ngp
+          ! J0^-1 = H / sqrt(c), c (init_gauss_maps)
+          blk%pg(il, :, g, ic) = blk%h(il, :, g, ic)/sqrt(blk%c(g, e))
+          blk%cw(il, g, ic) = blk%c(g, e)
+        end do
+      end if
       ! V_e summed as the kernel sums the current volume (F-3), so that
       ! Jbar = 1 exactly at rest
       blk%vol0(il, ic) = 0.0_wp
@@ -123,6 +135,39 @@ contains
       blk%diag(il, 3:4, ic) = x4 - x2
     end do
   end procedure make_finite
+
+  !> The finite Q4 kernel's reference data of one element (Flanagan and
+  !> Belytschko's exact split of the bilinear gradients, theory-elements.md
+  !> eqs. 6.2-6.3): grad_X N_a = b_a + gamma_a grad_X h at any point, h = xi
+  !> eta, b_a the gradient at the centre (b_3 = -b_1, b_4 = -b_2). pg(:, 1)
+  !> = (b_x1, b_x2, b_y1, b_y2), pg(:, 2) = gamma_1..4, pg(:, 3) and pg(:, 4)
+  !> = grad_X h at the Gauss points 1, 2 and 3, 4 (x, y each).
+  pure subroutine q4_split(geo, gxi, pg)
+    real(wp), intent(in) :: geo(ngeo), gxi(:,:)
+    real(wp), intent(out) :: pg(4, 4)
+    real(wp) :: j4, bgx(4), bgy(4), jac(2, 2), detj, xi, eta
+    integer :: g
+    associate (ax => geo(1), bx => geo(2), cx => geo(3), ay => geo(4), by => geo(5), cy => geo(6))
+      j4 = 4.0_wp*(ax*by - bx*ay)
+      bgx(1) = (ay - by)/j4
+      bgy(1) = (bx - ax)/j4
+      bgx(2) = (ay + by)/j4
+      bgy(2) = -(ax + bx)/j4
+      bgx(3:4) = -bgx(1:2)
+      bgy(3:4) = -bgy(1:2)
+      pg(:, 1) = [bgx(1), bgx(2), bgy(1), bgy(2)]
+      pg(:, 2) = 0.25_wp*[1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp] - cx*bgx - cy*bgy
+      do g = 1, 4
+        xi = gxi(1, g)
+        eta = gxi(2, g)
+        ! J_ik = dx_i/dxi_k of the map (eq. 6.2); grad_X h = J^-T (eta, xi)
+        jac = reshape([ax + cx*eta, ay + cy*eta, bx + cx*xi, by + cy*xi], [2, 2])
+        detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+        pg(q4h_row(g), q4h_col(g)) = (jac(2, 2)*eta - jac(2, 1)*xi)/detj
+        pg(q4h_row(g) + 1, q4h_col(g)) = (jac(1, 1)*xi - jac(1, 2)*eta)/detj
+      end do
+    end associate
+  end subroutine q4_split
 
   !> Allocate a block's watch (one entry per chunk).
   module procedure init_watch

@@ -34,6 +34,9 @@ module raccord_finite_kernel
 
   !> Elements per chunk: the same as raccord_elastic_block's chunk_len.
   integer, parameter, public :: fin_chunk_len = 32
+  !> Where grad_X h of Gauss point g sits in the Q4 reference data pg(:, 4, 4):
+  !> pg(q4h_row(g):q4h_row(g)+1, q4h_col(g)) (raccord_elastic_block_finite, q4_split).
+  integer, parameter, public :: q4h_row(4) = [1, 3, 1, 3], q4h_col(4) = [3, 3, 4, 4]
   integer, parameter :: max_nen = 8, max_gp = 9
 
 contains
@@ -42,25 +45,30 @@ contains
   !> stored energy; jmin = the smallest J over their Gauss points and jmin_el
   !> the chunk position of that element; with monitor, w2 = the largest
   !> omega^2 estimate 4 c^2 / L^2 of the chunk (0 when not asked).
-  !> dn(2, nen, ngp): natural derivatives; jinv(:, 4, g): J0^-1
-  !> column-major; cw(:, g) = c = w det J0 t0; vol0 = V_e; diag(:, 1:4) = reference
+  !> dn(2, nen, ngp): natural derivatives; pg(:, 4, ngp): the reference
+  !> geometry, for Q8 J0^-1 column-major at each point, for Q4 the exact
+  !> split grad_X N_a = b_a + gamma_a grad_X h (raccord_elastic_block_finite,
+  !> q4_split), with which F = F0 + q (x) grad_X h at each point and
+  !> f_a = Pbar b_a + gamma_a r, Pbar = sum_g c P, r = sum_g c P grad_X h; cw(:, g) = c = w det J0 t0; vol0 = V_e; diag(:, 1:4) = reference
   !> corner diagonals X3 - X1, X4 - X2 (x, y each); lfac = 1 (Q4) or 0.3 (Q8);
   !> rinv = 1/rho0; thickness t0 turns the element volume into its area.
   !> The body is raccord_finite_kernel_body.inc, one copy per element type.
   !>
   !> Q4: 4 nodes, 2x2 Gauss, L_e = A / longest diagonal.
-  pure subroutine kernel_finite_q4(nc, mat, vol, m, dn, jinv, cw, vol0, diag, rinv, thickness, monitor, &
+  pure subroutine kernel_finite_q4(nc, mat, vol, m, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
       ue, fe, energy, jmin, jmin_el, w2)
     integer, parameter :: nen = 4, ngp = 4
     real(wp), parameter :: lfac = 1.0_wp
+    logical, parameter :: split = .true.
     include 'raccord_finite_kernel_body.inc'
   end subroutine kernel_finite_q4
 
   !> Q8: 8 nodes, 3x3 Gauss, L_e = 0.3 A / longest corner diagonal.
-  pure subroutine kernel_finite_q8(nc, mat, vol, m, dn, jinv, cw, vol0, diag, rinv, thickness, monitor, &
+  pure subroutine kernel_finite_q8(nc, mat, vol, m, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
       ue, fe, energy, jmin, jmin_el, w2)
     integer, parameter :: nen = 8, ngp = 9
     real(wp), parameter :: lfac = 0.3_wp
+    logical, parameter :: split = .false.
     include 'raccord_finite_kernel_body.inc'
   end subroutine kernel_finite_q8
 
