@@ -11,17 +11,8 @@
 program test_finite_contact
   use raccord_kinds, only: wp
   use raccord_error, only: error_t
-  use raccord_scene, only: scene_t
-  use raccord_deck, only: read_scene
-  use raccord_mesh, only: mesh_t
-  use raccord_mesh_io, only: read_mesh
-  use raccord_model, only: model_t
-  use raccord_model_build, only: build_model
-  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
-  use raccord_state, only: state_t, init_state
-  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
-  use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
-  use raccord_scene_runner, only: scene_run_t, run_deck
+  use raccord_central_difference, only: advance_state
+  use raccord_scene_runner, only: scene_run_t, run_deck, prepare_deck, step_predict, step_finish
   use raccord_check, only: failure_t, new_test, run_tests, check
   use raccord_strings, only: str
   implicit none
@@ -94,65 +85,53 @@ contains
     real(wp), allocatable, intent(out) :: u_press(:,:), u_end(:,:)
     real(wp), intent(out) :: f_press(2), f_end(2), friction, stored
     integer, intent(out) :: steps
-    type(scene_t) :: scene
-    type(mesh_t) :: mesh
-    type(model_t) :: model
-    type(time_plan_t) :: plan
-    type(state_t) :: state
-    type(contact_pair_t), allocatable :: pairs(:)
+    type(scene_run_t), allocatable :: run
     type(error_t) :: err
     integer :: j, i, c, top_support
     real(wp) :: tn, p(2)
-    call read_scene(turn_deck(method, 'neo_hooke'), scene, err)
-    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
-    if (.not. err%failed()) call build_model(scene, mesh, model, err)
-    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
-    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    allocate(run)
+    call prepare_deck(turn_deck(method, 'neo_hooke'), run, err)
     if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
     if (allocated(failure)) return
     top_support = 0
-    do j = 1, size(model%supports)
-      if (model%supports(j)%set == 'slider_top') top_support = j
+    do j = 1, size(run%model%supports)
+      if (run%model%supports(j)%set == 'slider_top') top_support = j
     end do
-    call init_state(model, plan%dt, plan%nsteps, state)
-    state%t_end = plan%t_end
-    state%safety = scene%time%safety
-    do
-      call compute_forces(model, state)
-      call check_deformation(model, state, err)
-      if (.not. err%failed()) call adapt_time_step(model, state, err)
-      if (err%failed()) call check(failure, .false., err%message)
-      if (allocated(failure)) return
-      call predict_motion(model, state)
-      tn = state%time + state%dt
-      do j = 1, model%ncdof
-        i = model%cdof_node(j)
-        c = model%cdof_comp(j)
-        p = prescribed(model%x(:, i), model%cdof_support(j) == top_support, tn)
-        state%u_next(c, i) = p(c) - model%x(c, i)
-        state%v(c, i) = (state%u_next(c, i) - state%u(c, i))/state%dt
+    associate (model => run%model, state => run%state, pairs => run%pairs)
+      do
+        call step_predict(run, err)
+        if (err%failed()) call check(failure, .false., err%message)
+        if (allocated(failure)) return
+        ! the clamped edges go where the test drives them at t(n+1)
+        tn = state%time + state%dt
+        do j = 1, model%ncdof
+          i = model%cdof_node(j)
+          c = model%cdof_comp(j)
+          p = prescribed(model%x(:, i), model%cdof_support(j) == top_support, tn)
+          state%u_next(c, i) = p(c) - model%x(c, i)
+          state%v(c, i) = (state%u_next(c, i) - state%u(c, i))/state%dt
+        end do
+        call step_finish(run, err)
+        if (err%failed()) call check(failure, .false., 'contact: ' // err%message)
+        if (allocated(failure)) return
+        if (state%time <= t_turn0 .and. state%time + state%dt > t_turn0) then
+          u_press = state%u
+          f_press = pairs(1)%force
+          stored = state%energy%internal
+        end if
+        if (state%step == state%nsteps) exit
+        call advance_state(state)
       end do
-      call enforce_contact(pairs, model, state, err)
-      if (err%failed()) call check(failure, .false., 'contact: ' // err%message)
-      if (allocated(failure)) return
-      call update_energy(model, state)
-      if (state%time <= t_turn0 .and. state%time + state%dt > t_turn0) then
-        u_press = state%u
-        f_press = pairs(1)%force
-        stored = state%energy%internal
-      end if
-      if (state%step == state%nsteps) exit
-      call advance_state(state)
-    end do
-    u_end = state%u
-    f_end = pairs(1)%force
-    friction = state%energy%friction
-    steps = int(state%step)
-    ! the pressed state turned by 90 degrees, as displacements
-    do i = 1, model%nnode
-      p = model%x(:, i) + u_press(:, i)
-      u_press(:, i) = [-p(2), p(1)] - model%x(:, i)
-    end do
+      u_end = state%u
+      f_end = pairs(1)%force
+      friction = state%energy%friction
+      steps = int(state%step)
+      ! the pressed state turned by 90 degrees, as displacements
+      do i = 1, model%nnode
+        p = model%x(:, i) + u_press(:, i)
+        u_press(:, i) = [-p(2), p(1)] - model%x(:, i)
+      end do
+    end associate
   end subroutine run_turn
 
   subroutine check_turn(method, failure)
@@ -266,12 +245,7 @@ contains
     character(len=*), intent(in) :: method
     type(failure_t), allocatable, intent(inout) :: failure
     real(wp), intent(out) :: ratio_mean, ratio_max, balance, travel
-    type(scene_t) :: scene
-    type(mesh_t) :: mesh
-    type(model_t) :: model
-    type(time_plan_t) :: plan
-    type(state_t) :: state
-    type(contact_pair_t), allocatable :: pairs(:)
+    type(scene_run_t), allocatable :: run
     type(error_t) :: err
     character(len=512) :: root
     character(len=:), allocatable :: path
@@ -295,46 +269,35 @@ contains
     write(u, '(a)') '&contact_pair slave = ''slider_bottom'', master = ''base_top'', friction = 0.3,'
     write(u, '(a)') '  method = ''' // method // ''' /'
     close(u)
-    call read_scene(path, scene, err)
-    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
-    if (.not. err%failed()) call build_model(scene, mesh, model, err)
-    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
-    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    allocate(run)
+    call prepare_deck(path, run, err)
     if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
     if (allocated(failure)) return
-    call init_state(model, plan%dt, plan%nsteps, state)
-    state%t_end = plan%t_end
-    state%safety = scene%time%safety
     rmax = -huge(1.0_wp)
     rsum = 0.0_wp
     nsample = 0
-    balance = 0.0_wp
-    do
-      call compute_forces(model, state)
-      call check_deformation(model, state, err)
-      if (.not. err%failed()) call adapt_time_step(model, state, err)
-      if (err%failed()) call check(failure, .false., err%message)
-      if (allocated(failure)) return
-      call predict_motion(model, state)
-      call enforce_contact(pairs, model, state, err)
-      if (err%failed()) call check(failure, .false., 'contact: ' // err%message)
-      if (allocated(failure)) return
-      call update_energy(model, state)
-      if (state%energy%scale > 0.0_wp) balance = max(balance, abs(state%energy%balance)/state%energy%scale)
-      ! steady sliding: the drag velocity is constant on [3e-5, 1.5e-4]
-      if (state%time > 5.0e-5_wp .and. state%time < 1.45e-4_wp) then
-        r = abs(pairs(1)%tangent_sum)/max(abs(pairs(1)%normal_sum), tiny(1.0_wp))
-        rmax = max(rmax, r)
-        rsum = rsum + r
-        nsample = nsample + 1
-      end if
-      if (state%step == state%nsteps) exit
-      call advance_state(state)
-    end do
-    ratio_mean = rsum/real(max(nsample, 1), wp)
-    ratio_max = rmax
-    n = minloc(model%x(1, :)**2 + (model%x(2, :) - 0.0_wp)**2 + merge(0.0_wp, 1.0e9_wp, model%node_body == 2), 1)
-    travel = state%u(1, n)
+    associate (model => run%model, state => run%state, pairs => run%pairs)
+      do
+        call step_predict(run, err)
+        if (.not. err%failed()) call step_finish(run, err)
+        if (err%failed()) call check(failure, .false., err%message)
+        if (allocated(failure)) return
+        ! steady sliding: the drag velocity is constant on [3e-5, 1.5e-4]
+        if (state%time > 5.0e-5_wp .and. state%time < 1.45e-4_wp) then
+          r = abs(pairs(1)%tangent_sum)/max(abs(pairs(1)%normal_sum), tiny(1.0_wp))
+          rmax = max(rmax, r)
+          rsum = rsum + r
+          nsample = nsample + 1
+        end if
+        if (state%step == state%nsteps) exit
+        call advance_state(state)
+      end do
+      ratio_mean = rsum/real(max(nsample, 1), wp)
+      ratio_max = rmax
+      balance = run%worst_balance
+      n = minloc(model%x(1, :)**2 + model%x(2, :)**2 + merge(0.0_wp, 1.0e9_wp, model%node_body == 2), 1)
+      travel = state%u(1, n)
+    end associate
   end subroutine run_drag
 
   !> What holds while the soft slider is dragged: it travels the whole way

@@ -10,16 +10,8 @@
 program test_finite_ironing
   use raccord_kinds, only: wp
   use raccord_error, only: error_t
-  use raccord_scene, only: scene_t
-  use raccord_deck, only: read_scene
-  use raccord_mesh, only: mesh_t
-  use raccord_mesh_io, only: read_mesh
-  use raccord_model, only: model_t
-  use raccord_model_build, only: build_model
-  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
-  use raccord_state, only: state_t, init_state
-  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
-  use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
+  use raccord_central_difference, only: advance_state
+  use raccord_scene_runner, only: scene_run_t, prepare_deck, step_predict, step_finish
   use raccord_check, only: failure_t, new_test, run_tests, check
   use raccord_strings, only: str
   implicit none
@@ -45,12 +37,7 @@ contains
     real(wp), intent(in) :: mu
     type(ironing_t), intent(out) :: r
     type(failure_t), allocatable, intent(inout) :: failure
-    type(scene_t) :: scene
-    type(mesh_t) :: mesh
-    type(model_t) :: model
-    type(time_plan_t) :: plan
-    type(state_t) :: state
-    type(contact_pair_t), allocatable :: pairs(:)
+    type(scene_run_t), allocatable :: run
     type(error_t) :: err
     character(len=512) :: root, line
     character(len=:), allocatable :: path
@@ -77,58 +64,49 @@ contains
     end do
     close(u)
     close(v)
-    call read_scene(path, scene, err)
-    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
-    if (.not. err%failed()) call build_model(scene, mesh, model, err)
-    if (.not. err%failed()) call init_contact_pairs(scene, mesh, model, pairs, err)
-    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    allocate(run)
+    call prepare_deck(path, run, err)
     if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
     if (allocated(failure)) return
-    call init_state(model, plan%dt, plan%nsteps, state)
-    state%t_end = plan%t_end
-    state%safety = scene%time%safety
     s1 = 0.0_wp
     s2 = 0.0_wp
     dt_sum = 0.0_wp
-    do
-      call compute_forces(model, state)
-      call check_deformation(model, state, err)
-      if (.not. err%failed()) call adapt_time_step(model, state, err)
-      if (err%failed()) call check(failure, .false., err%message)
-      if (allocated(failure)) return
-      call predict_motion(model, state)
-      call enforce_contact(pairs, model, state, err)
-      if (err%failed()) call check(failure, .false., 'contact: ' // err%message)
-      if (allocated(failure)) return
-      call update_energy(model, state)
-      if (state%energy%scale > 0.0_wp) r%balance = max(r%balance, abs(state%energy%balance)/state%energy%scale)
-      r%contact_min = min(r%contact_min, state%energy%contact)
-      ! the die's reaction over the steady part of the slide, time-weighted
-      if (state%time > 150.0_wp .and. state%time < 450.0_wp) then
-        f = 0.0_wp
-        do j = 1, model%ncdof
-          if (model%supports(model%cdof_support(j))%set == 'die_ends') &
-            f(model%cdof_comp(j)) = f(model%cdof_comp(j)) + state%reaction(j)
-        end do
-        w = state%dt
-        s1 = s1 + w*f
-        s2 = s2 + w*f*f
-        dt_sum = dt_sum + w
-      end if
-      if (state%step == state%nsteps) exit
-      call advance_state(state)
-    end do
+    associate (model => run%model, state => run%state)
+      do
+        call step_predict(run, err)
+        if (.not. err%failed()) call step_finish(run, err)
+        if (err%failed()) call check(failure, .false., err%message)
+        if (allocated(failure)) return
+        ! the die's reaction over the steady part of the slide, time-weighted
+        if (state%time > 150.0_wp .and. state%time < 450.0_wp) then
+          f = 0.0_wp
+          do j = 1, model%ncdof
+            if (model%supports(model%cdof_support(j))%set == 'die_ends') &
+              f(model%cdof_comp(j)) = f(model%cdof_comp(j)) + state%reaction(j)
+          end do
+          w = state%dt
+          s1 = s1 + w*f
+          s2 = s2 + w*f*f
+          dt_sum = dt_sum + w
+        end if
+        if (state%step == state%nsteps) exit
+        call advance_state(state)
+      end do
+    end associate
+    r%balance = run%worst_balance
+    r%contact_min = run%min_contact_work
     r%fx = s1(1)/dt_sum
     r%fy = s1(2)/dt_sum
     r%sx = sqrt(max(0.0_wp, s2(1)/dt_sum - r%fx**2))
     r%sy = sqrt(max(0.0_wp, s2(2)/dt_sum - r%fy**2))
-    r%friction = state%energy%friction
-    r%steps = int(state%step)
+    r%friction = run%state%energy%friction
+    r%steps = int(run%state%step)
     i = 0
-    do j = 1, model%ncdof
-      if (model%supports(model%cdof_support(j))%set == 'die_ends' .and. model%cdof_comp(j) == 1) i = model%cdof_node(j)
+    do j = 1, run%model%ncdof
+      if (run%model%supports(run%model%cdof_support(j))%set == 'die_ends' .and. run%model%cdof_comp(j) == 1) &
+        i = run%model%cdof_node(j)
     end do
-    r%travel = state%u(1, i)
+    r%travel = run%state%u(1, i)
     print '(a)', '  ' // method // ', mu = ' // trim(adjustl(mu_text)) // ': die reaction over the slide Fx = ' // &
       str(r%fx, 4) // ' +- ' // str(r%sx, 3) // ', Fy = ' // str(r%fy, 4) // ' +- ' // str(r%sy, 3) // &
       ' (Fx/Fy ' // str(r%fx/r%fy, 3) // '); friction work ' // str(r%friction, 4) // '; worst balance ' // &

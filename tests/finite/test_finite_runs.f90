@@ -8,16 +8,8 @@ program test_finite_runs
   use raccord_error, only: error_t, EXIT_NUMERIC
   use raccord_material, only: moduli_t, make_moduli
   use raccord_elastic_block, only: add_nodal_stress
-  use raccord_scene_runner, only: scene_run_t, run_deck
-  use raccord_scene, only: scene_t
-  use raccord_deck, only: read_scene
-  use raccord_mesh, only: mesh_t
-  use raccord_mesh_io, only: read_mesh
-  use raccord_model, only: model_t
-  use raccord_model_build, only: build_model
-  use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
-  use raccord_state, only: state_t, init_state
-  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
+  use raccord_scene_runner, only: scene_run_t, run_deck, prepare_deck, step_predict, step_finish
+  use raccord_central_difference, only: advance_state
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
   use raccord_strings, only: str
   implicit none
@@ -205,11 +197,7 @@ contains
   subroutine spin(failure, mesh_file)
     type(failure_t), allocatable, intent(inout) :: failure
     character(len=*), intent(in) :: mesh_file
-    type(scene_t) :: scene
-    type(mesh_t) :: mesh
-    type(model_t) :: model
-    type(time_plan_t) :: plan
-    type(state_t) :: state
+    type(scene_run_t), allocatable :: run
     type(error_t) :: err
     character(len=512) :: root
     real(wp), allocatable :: s(:,:), wsum(:), r0(:,:)
@@ -225,52 +213,48 @@ contains
     write(u, '(a)') '  kinematics = ''finite'', material = ''neo_hooke'' /'
     write(u, '(a, es23.15, a)') '&time t_end = ', 0.5_wp*pi/omega, ' /'
     close(u)
-    call read_scene('spin.nml', scene, err)
-    if (.not. err%failed()) call read_mesh(scene%mesh%file, mesh, err, scene%mesh%format, scene%mesh%scale)
-    if (.not. err%failed()) call build_model(scene, mesh, model, err)
-    if (.not. err%failed()) call choose_time_step(scene, model, plan, err)
+    allocate(run)
+    call prepare_deck('./spin.nml', run, err)
     if (err%failed()) call check(failure, .false., 'set-up: ' // err%message)
     if (allocated(failure)) return
-    ! rigid spin about (0.5, 0.5): v = omega e_z x (X - c)
-    allocate(r0(2, model%nnode))
-    r0(1, :) = model%x(1, :) - 0.5_wp
-    r0(2, :) = model%x(2, :) - 0.5_wp
-    model%v0(1, :) = -omega*r0(2, :)
-    model%v0(2, :) = omega*r0(1, :)
-    call init_state(model, plan%dt, plan%nsteps, state)
-    state%t_end = plan%t_end
-    state%safety = scene%time%safety
-    e0 = 0.0_wp
-    worst_e = 0.0_wp
-    do
-      call compute_forces(model, state)
-      call check_deformation(model, state, err)
-      if (.not. err%failed()) call adapt_time_step(model, state, err)
-      if (err%failed()) call check(failure, .false., err%message)
-      if (allocated(failure)) return
-      call predict_motion(model, state)
-      call update_energy(model, state)
-      if (state%step == 0) e0 = state%energy%kinetic
-      worst_e = max(worst_e, abs(state%energy%kinetic + state%energy%internal - e0))
-      if (state%step == state%nsteps) exit
-      call advance_state(state)
-    end do
+    associate (model => run%model, state => run%state)
+      ! rigid spin about (0.5, 0.5): v = omega e_z x (X - c)
+      allocate(r0(2, model%nnode))
+      r0(1, :) = model%x(1, :) - 0.5_wp
+      r0(2, :) = model%x(2, :) - 0.5_wp
+      model%v0(1, :) = -omega*r0(2, :)
+      model%v0(2, :) = omega*r0(1, :)
+      state%v = model%v0
+      state%v_mid = model%v0
+      e0 = 0.0_wp
+      worst_e = 0.0_wp
+      do
+        call step_predict(run, err)
+        if (.not. err%failed()) call step_finish(run, err)
+        if (err%failed()) call check(failure, .false., err%message)
+        if (allocated(failure)) return
+        if (state%step == 0) e0 = state%energy%kinetic
+        worst_e = max(worst_e, abs(state%energy%kinetic + state%energy%internal - e0))
+        if (state%step == state%nsteps) exit
+        call advance_state(state)
+      end do
+    end associate
     ! after a quarter turn every node is where the turned body puts it
     pos_err = 0.0_wp
-    do i = 1, model%nnode
+    do i = 1, run%model%nnode
       turned = [0.5_wp - r0(2, i), 0.5_wp + r0(1, i)]
-      pos_err = max(pos_err, norm2(model%x(:, i) + state%u(:, i) - turned))
+      pos_err = max(pos_err, norm2(run%model%x(:, i) + run%state%u(:, i) - turned))
     end do
-    allocate(s(4, model%nnode), wsum(model%nnode), source=0.0_wp)
-    do k = 1, size(model%bodies(1)%blocks)
-      call add_nodal_stress(model%bodies(1)%blocks(k), state%u, s, wsum)
+    allocate(s(4, run%model%nnode), wsum(run%model%nnode), source=0.0_wp)
+    do k = 1, size(run%model%bodies(1)%blocks)
+      call add_nodal_stress(run%model%bodies(1)%blocks(k), run%state%u, s, wsum)
     end do
     smax = 0.0_wp
-    do i = 1, model%nnode
+    do i = 1, run%model%nnode
       if (wsum(i) > 0.0_wp) smax = max(smax, maxval(abs(s(:, i)/wsum(i))))
     end do
     scent = rho*omega**2*0.5_wp
-    print '(a)', '  ' // mesh_file // ': quarter turn in ' // str(state%step) // ' steps; largest stress ' // &
+    print '(a)', '  ' // mesh_file // ': quarter turn in ' // str(run%state%step) // ' steps; largest stress ' // &
       str(smax/scent, 3) // ' x rho omega^2 R^2 (' // str(smax/young, 3) // ' of E); kinetic + stored energy ' // &
       'drift ' // str(worst_e/e0, 3) // ' of the kinetic; position off the rigid turn by ' // str(pos_err, 3)
     call check(failure, smax < 3.0_wp*scent, mesh_file // ': stress ' // str(smax) // ' beyond the centrifugal ' // &

@@ -30,7 +30,7 @@ module raccord_scene_runner
     real(wp) :: min_contact_work = 0.0_wp  !< lowest contact work over the run (< 0: contact gave energy)
   end type scene_run_t
 
-  public :: run_deck
+  public :: run_deck, prepare_deck, step_predict, step_finish
 
 contains
 
@@ -42,10 +42,30 @@ contains
     type(scene_run_t), intent(out) :: run
     type(error_t), intent(inout) :: err
     real(wp), intent(in), optional :: t_stop
+    call prepare_deck(path, run, err)
+    if (err%failed()) return
+    do
+      call step_predict(run, err)
+      if (err%failed()) return
+      call step_finish(run, err)
+      if (err%failed()) return
+      if (run%state%step == run%state%nsteps) exit
+      if (present(t_stop)) then
+        if (run%state%time >= t_stop - 0.5_wp*run%state%dt) exit
+      end if
+      call advance_state(run%state)
+    end do
+  end subroutine run_deck
+
+  !> The phases of the program before its time loop: the scene, the mesh,
+  !> the model, the contact pairs, the time plan and the state at t = 0.
+  subroutine prepare_deck(path, run, err)
+    character(len=*), intent(in) :: path
+    type(scene_run_t), intent(out) :: run
+    type(error_t), intent(inout) :: err
     character(len=512) :: root
     character(len=:), allocatable :: full
     integer :: length, stat
-
     call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
     full = path
     if (stat == 0 .and. path(1:1) /= '/' .and. index(path, './') /= 1) full = trim(root) // '/' // path
@@ -63,31 +83,39 @@ contains
     run%state%t_end = run%plan%t_end
     run%state%safety = run%scene%time%safety
     if (run%model%has_body_force) run%state%f_ext = run%model%f_body
-    associate (state => run%state, model => run%model)
-      do
-        call compute_forces(model, state)
-        if (model%has_finite) then
-          call check_deformation(model, state, err)
-          if (err%failed()) return
-          call adapt_time_step(model, state, err)
-          if (err%failed()) return
-        end if
-        call predict_motion(model, state)
-        if (size(run%pairs) > 0) call enforce_contact(run%pairs, model, state, err)
-        if (err%failed()) return
-        call update_energy(model, state)
-        ! Relative to the energies of the run; a step where all are zero has
-        ! nothing to be relative to (its balance is then zero too).
-        if (state%energy%scale > 0.0_wp) &
-          run%worst_balance = max(run%worst_balance, abs(state%energy%balance)/state%energy%scale)
-        run%max_internal = max(run%max_internal, state%energy%internal)
-        run%min_contact_work = min(run%min_contact_work, state%energy%contact)
-        if (state%step == state%nsteps) exit
-        if (present(t_stop)) then
-          if (state%time >= t_stop - 0.5_wp*state%dt) exit
-        end if
-        call advance_state(state)
-      end do
+  end subroutine prepare_deck
+
+  !> First half of the program's step n: forces at t(n), with finite-strain
+  !> bodies the inversion check and the step that follows the mesh, and the
+  !> predictor. A test may change the predicted motion before step_finish.
+  subroutine step_predict(run, err)
+    type(scene_run_t), intent(inout) :: run
+    type(error_t), intent(inout) :: err
+    call compute_forces(run%model, run%state)
+    if (run%model%has_finite) then
+      call check_deformation(run%model, run%state, err)
+      if (err%failed()) return
+      call adapt_time_step(run%model, run%state, err)
+      if (err%failed()) return
+    end if
+    call predict_motion(run%model, run%state)
+  end subroutine step_predict
+
+  !> Second half of step n: the contact correction, the energy account and
+  !> the run's worst balance, largest internal energy and least contact work.
+  subroutine step_finish(run, err)
+    type(scene_run_t), intent(inout) :: run
+    type(error_t), intent(inout) :: err
+    associate (state => run%state)
+      if (size(run%pairs) > 0) call enforce_contact(run%pairs, run%model, state, err)
+      if (err%failed()) return
+      call update_energy(run%model, state)
+      ! Relative to the energies of the run; a step where all are zero has
+      ! nothing to be relative to (its balance is then zero too).
+      if (state%energy%scale > 0.0_wp) &
+        run%worst_balance = max(run%worst_balance, abs(state%energy%balance)/state%energy%scale)
+      run%max_internal = max(run%max_internal, state%energy%internal)
+      run%min_contact_work = min(run%min_contact_work, state%energy%contact)
     end associate
-  end subroutine run_deck
+  end subroutine step_finish
 end module raccord_scene_runner
