@@ -80,6 +80,9 @@ contains
     call results_write_mesh(out%res, model%x, result_blocks(model), err)
     if (err%failed()) return
     do k = 1, size(model%supports)
+      ! Several &boundary groups may act on one node set (one component
+      ! each): the set is written once, under its name.
+      if (set_written_before(model, k)) cycle
       call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
       if (err%failed()) return
     end do
@@ -92,6 +95,17 @@ contains
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
   end subroutine open_outputs
+
+  !> True when a support before the k-th acts on the same node set.
+  logical function set_written_before(model, k)
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: k
+    integer :: j
+    set_written_before = .false.
+    do j = 1, k - 1
+      if (model%supports(j)%set == model%supports(k)%set) set_written_before = .true.
+    end do
+  end function set_written_before
 
   !> Settings and scratch of the outputs, for a new or a resumed run.
   subroutine prepare_outputs(out, scene, model, plan, pairs, stem)
