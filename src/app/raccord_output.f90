@@ -21,6 +21,7 @@ module raccord_output
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file, file_size, truncate_file
+  use raccord_machine, only: physical_memory_bytes
   use raccord_deck, only: write_scene
   implicit none
   private
@@ -73,7 +74,8 @@ contains
     type(error_t), intent(inout) :: err
     integer :: k
 
-    call prepare_outputs(out, scene, model, plan, pairs, stem)
+    call prepare_outputs(out, scene, model, plan, pairs, stem, err)
+    if (err%failed()) return
     call results_open(out%res, stem, err)
     if (err%failed()) return
     out%is_open = .true.
@@ -108,14 +110,15 @@ contains
   end function set_written_before
 
   !> Settings and scratch of the outputs, for a new or a resumed run.
-  subroutine prepare_outputs(out, scene, model, plan, pairs, stem)
+  subroutine prepare_outputs(out, scene, model, plan, pairs, stem, err)
     type(output_t), intent(out) :: out
     type(scene_t), intent(in) :: scene
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
-    integer :: nrow_max
+    type(error_t), intent(inout) :: err
+    integer(i8) :: nrow_max, bytes, budget
     out%stem = stem
     out%stress = scene%output%stress
     out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
@@ -124,8 +127,22 @@ contains
     if (out%history_every <= 0) out%history_every = max(1_i8, plan%nsteps/1000_i8)
     call history_columns(model, pairs, out%columns)
     allocate(out%row(size(out%columns)))
-    nrow_max = int(plan%nsteps/out%history_every) + 3
-    allocate(out%table(size(out%columns), nrow_max))
+    ! The history rows are kept in memory for the HDF5 copy (and twice at a
+    ! checkpoint): their number is checked against the memory of the
+    ! machine before the table is allocated, never taken on trust.
+    nrow_max = plan%nsteps/out%history_every + 3
+    bytes = nrow_max*int(size(out%columns), i8)*8_i8
+    budget = physical_memory_bytes()/8_i8
+    if (nrow_max > int(huge(1), i8) .or. bytes > budget) then
+      call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &output history_every = ' // &
+        str(out%history_every) // ' over ' // str(plan%nsteps) // ' steps makes ' // str(nrow_max) // &
+        ' history rows of ' // str(size(out%columns)) // ' columns (' // str(real(bytes, wp)/1.0e9_wp, 3) // &
+        ' GB), more than the ' // str(real(budget, wp)/1.0e9_wp, 3) // ' GB (an eighth of this machine''s ' // &
+        'memory) a history may take: set history_every >= ' // &
+        str(max(1_i8, plan%nsteps/max(1_i8, budget/(8_i8*size(out%columns)) - 3) + 1)) // ' (or 0 for 1000 rows)')
+      return
+    end if
+    allocate(out%table(size(out%columns), int(nrow_max)))
     allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
   end subroutine prepare_outputs
 
@@ -219,7 +236,8 @@ contains
     integer :: k, n, ios
     integer(i8) :: bytes
 
-    call prepare_outputs(out, scene, model, plan, pairs, stem)
+    call prepare_outputs(out, scene, model, plan, pairs, stem, err)
+    if (err%failed()) return
     if (mark%nrow > size(out%table, 2) .or. size(mark%table, 1) /= size(out%columns)) then
       call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' does not fit this scene''s history ' // &
         'table; run the scene afresh without --restart')
