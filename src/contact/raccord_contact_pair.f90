@@ -108,6 +108,16 @@ contains
             model%bodies(bs)%name // '''; self-contact is not supported. Use surfaces of two bodies.')
           return
         end if
+        ! Multipliers act through 1/mass of the free dofs: with every dof of
+        ! both surfaces prescribed they cannot act at all (the solve then
+        ! 'failed to converge' with a residual of 0).
+        if (all(model%minv_dof(:, pair%slave%node) == 0.0_wp) .and. &
+            all(model%minv_dof(:, pair%master%node) == 0.0_wp)) then
+          call raise_error(err, EXIT_INPUT, where // ': every node of both surfaces has both components ' // &
+            'prescribed by &boundary groups, so contact can move neither body: free one body (or some ' // &
+            'components), or remove the &contact_pair')
+          return
+        end if
         pair%name = trim(spec%slave) // '/' // trim(spec%master)
         pair%method = spec%method
         pair%multiplier = spec%multiplier
