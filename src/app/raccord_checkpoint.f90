@@ -24,11 +24,11 @@ module raccord_checkpoint
   use raccord_version, only: raccord_version_string
   use raccord_scene, only: scene_t
   use raccord_deck, only: write_scene
-  use raccord_paths, only: absolute_path
+  use raccord_paths, only: absolute_path, path_dir
   use raccord_state, only: state_t
   use raccord_contact_pair, only: contact_pair_t
   use raccord_output, only: output_mark_t
-  use raccord_files, only: rename_file, delete_file, file_exists
+  use raccord_files, only: rename_file, delete_file, file_exists, write_failure_reason
   use raccord_h5, only: h5_acquire, h5_release, h5_write_real, h5_write_int, h5_write_text, h5_attr_text, &
     h5_attr_int, h5_link_exists
   use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8
@@ -107,7 +107,7 @@ contains
     if (err%failed()) return
     call h5fcreate_f(part, H5F_ACC_TRUNC_F, file, hdferr)
     if (hdferr /= 0) then
-      call raise_error(err, EXIT_IO, 'cannot create ' // where // '; check that the folder is writable')
+      call raise_error(err, EXIT_IO, 'cannot create ' // where // ': ' // write_failure_reason(path_dir(part)))
       call h5_release(err)
       return
     end if

@@ -7,19 +7,22 @@
 !> message needs to say how to fix it.
 module raccord_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_char, c_associated, &
-    c_f_pointer, c_long
+    c_f_pointer, c_long, c_size_t
   use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_IO
   implicit none
   private
 
   public :: rename_file, make_directory, file_exists, delete_file, file_size, truncate_file
+  public :: write_failure_reason
 
   !> access(2) mode "does the file exist".
   integer(c_int), parameter :: F_OK = 0_c_int
   !> Permissions for new directories; the process umask still applies,
   !> as for `mkdir -p`.
   integer(c_int), parameter :: DIR_MODE = int(o'777', c_int)
+  !> access(2) mode "may this process write there".
+  integer(c_int), parameter :: W_OK = 2_c_int
   !> Longest C error text copied from strerror.
   integer, parameter :: MAX_ERRTEXT = 256
 
@@ -57,6 +60,32 @@ module raccord_files
       integer(c_long), value :: length
       integer(c_int) :: rc
     end function c_truncate
+
+    function c_fopen(path, mode) bind(C, name='fopen') result(fp)
+      import :: c_char, c_ptr
+      character(kind=c_char), intent(in) :: path(*), mode(*)
+      type(c_ptr) :: fp
+    end function c_fopen
+
+    function c_fwrite(buf, size, n, fp) bind(C, name='fwrite') result(written)
+      import :: c_char, c_ptr, c_size_t
+      character(kind=c_char), intent(in) :: buf(*)
+      integer(c_size_t), value :: size, n
+      type(c_ptr), value :: fp
+      integer(c_size_t) :: written
+    end function c_fwrite
+
+    function c_fflush(fp) bind(C, name='fflush') result(rc)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: fp
+      integer(c_int) :: rc
+    end function c_fflush
+
+    function c_fclose(fp) bind(C, name='fclose') result(rc)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: fp
+      integer(c_int) :: rc
+    end function c_fclose
 
     function c_strerror(errnum) bind(C, name='strerror') result(text)
       import :: c_int, c_ptr
@@ -141,6 +170,48 @@ contains
         // ' bytes: ' // last_error_text())
     end if
   end subroutine truncate_file
+
+  !> Why a file could not be written in a folder, found out after the fact
+  !> (HDF5 does not pass the system's reason on): the folder is missing, or
+  !> not writable, or a probe of 64 KiB written and flushed there fails with
+  !> the system's own words (a full disk: "No space left on device").
+  function write_failure_reason(folder) result(reason)
+    character(len=*), intent(in) :: folder
+    character(len=:), allocatable :: reason, dir, probe
+    character(kind=c_char, len=1024) :: block
+    type(c_ptr) :: fp
+    integer(c_int) :: rc
+    integer :: k
+    dir = trim(folder)
+    if (len(dir) == 0) dir = '.'
+    if (.not. is_directory(dir)) then
+      reason = 'the folder "' // dir // '" does not exist (or is not a folder)'
+      return
+    end if
+    if (c_access(c_path(dir), W_OK) /= 0) then
+      reason = 'the folder "' // dir // '" is not writable: ' // last_error_text()
+      return
+    end if
+    ! C stdio, not a Fortran unit: gfortran's FLUSH and CLOSE do not report
+    ! a write the disk refused, fflush(3) does, with errno.
+    probe = dir // '/.raccord-write-probe'
+    reason = ''
+    fp = c_fopen(c_path(probe), c_path('w'))
+    if (.not. c_associated(fp)) then
+      reason = 'cannot create a file in "' // dir // '": ' // last_error_text()
+      return
+    end if
+    block = repeat('0', len(block))
+    do k = 1, 64
+      if (c_fwrite(block, 1_c_size_t, int(len(block), c_size_t), fp) /= int(len(block), c_size_t)) exit
+    end do
+    if (k <= 64 .or. c_fflush(fp) /= 0) reason = 'writing in "' // dir // '" fails: ' // last_error_text() // &
+      ' (full disk or quota?): free some space or write elsewhere (--output)'
+    rc = c_fclose(fp)
+    rc = c_unlink(c_path(probe))
+    if (len(reason) == 0) reason = 'the folder "' // dir // '" takes a 64 KiB test file, so the failure may ' // &
+      'have passed (was the disk nearly full?)'
+  end function write_failure_reason
 
   ! --- private -----------------------------------------------------------
 

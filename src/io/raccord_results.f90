@@ -21,7 +21,7 @@ module raccord_results
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, prefix_error, EXIT_IO, EXIT_INPUT, EXIT_INTERNAL
   use raccord_strings, only: str
-  use raccord_files, only: make_directory, rename_file, delete_file, file_exists
+  use raccord_files, only: make_directory, rename_file, delete_file, file_exists, write_failure_reason
   use raccord_h5, only: h5_acquire, h5_release, h5_delete_link, h5_link_exists, &
     h5_write_real, h5_write_int, h5_write_text, h5_attr_real, h5_attr_int, h5_attr_text, &
     h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
@@ -101,8 +101,8 @@ contains
     if (err%failed()) return
     call h5fcreate_f(res%part_name, H5F_ACC_TRUNC_F, res%file, hdferr)
     if (hdferr /= 0) then
-      call raise_error(err, EXIT_IO, 'cannot create ' // res%where &
-        // '; check that the folder exists and is writable')
+      call raise_error(err, EXIT_IO, 'cannot create ' // res%where // ': ' // &
+        write_failure_reason(folder_of(res%stem)))
       call h5_release(err)
       return
     end if
