@@ -51,6 +51,11 @@ contains
       case ('-o', '--output')
         call option_value(k, n, arg, 'a folder: raccord --output DIR SCENE', cli%output_dir, err)
         if (err%failed()) return
+        if (len_trim(cli%output_dir) == 0) then
+          call raise_error(err, EXIT_USAGE, 'option ' // arg // ' is given an empty folder name: give a ' // &
+            'folder (. for the current one)')
+          return
+        end if
       case ('--restart')
         call option_value(k, n, arg, 'a checkpoint: raccord --restart DIR/NAME.checkpoint.h5 [SCENE]', &
           cli%restart_path, err)
@@ -75,6 +80,11 @@ contains
         if (allocated(cli%scene_path)) then
           call raise_error(err, EXIT_USAGE, 'one scene per run: got ''' // cli%scene_path // ''' and ''' // &
             arg // ''' (run raccord once per scene, or use hpc/ sweep scripts)')
+          return
+        end if
+        if (len_trim(arg) == 0) then
+          call raise_error(err, EXIT_USAGE, 'an empty argument where the scene deck was expected: give ' // &
+            'the path of the deck (raccord --help)')
           return
         end if
         cli%scene_path = arg

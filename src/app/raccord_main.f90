@@ -38,6 +38,7 @@ program raccord_main
   use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, note_step, must_stop, &
     stop_reason, checkpoint_due, note_checkpoint
   use raccord_files, only: make_directory, file_exists, delete_file
+  use raccord_run_lock, only: take_run_lock, drop_run_lock
   implicit none
 
   interface
@@ -165,6 +166,7 @@ program raccord_main
   call report_summary(model, state, out, pairs, first_step)
   call log_debug('raccord', 'longest step ' // str(control%step_max, 3) // ' s, longest checkpoint write ' // &
     str(control%write_max, 3) // ' s (' // str(control%checkpoints) // ' checkpoints)')
+  call drop_run_lock()
   call log_close()
 
 contains
@@ -265,6 +267,7 @@ contains
     call log_info('raccord', 'stopped at step ' // str(state%step) // ' of ' // str(state%nsteps) // ', t = ' // &
       str(state%time) // ': ' // reason)
     call log_info('raccord', 'continue with: raccord --restart ' // checkpoint_name(stem))
+    call drop_run_lock()
     call log_close()
     ! Exit 5 is not an error: no ERROR STOP text or backtrace on stderr.
     ! Every file is closed and the HDF5 library released by now.
@@ -278,6 +281,10 @@ contains
     integer :: stat
     character(len=512) :: msg
     call make_directory(scene%run%output_dir, err)
+    if (err%failed()) call finish(err)
+    ! One run per output stem: a second run into the same folder and name
+    ! is refused before it touches the first one's files (log included).
+    call take_run_lock(stem, err)
     if (err%failed()) call finish(err)
     call log_open(stem // '.log', stat, msg, append=restart)
     if (stat /= 0) then
@@ -324,6 +331,7 @@ contains
     if (e%code /= EXIT_USAGE .and. e%code /= EXIT_INPUT) &
       call log_error('raccord', 'run stopped; result files (if any) are marked incomplete')
     if (close_err%failed()) call log_error('raccord', close_err%message)
+    call drop_run_lock()
     call log_close()
     ! A result file that could not be closed (full disk) is still in the
     ! HDF5 library's list of open files, and the library's exit-time cleanup
