@@ -169,6 +169,15 @@ contains
     kw = lower(trim(adjustl(sl%text(2:l(1)))))
     at = loc_text(d, sl)
 
+    ! Parts and instances (Abaqus/CAE's default) place each part by its
+    ! instance's translation and rotation, and number each part from 1;
+    ! read flat, the geometry would be silently wrong. Refused.
+    if (kw == 'part' .or. kw == 'instance' .or. kw == 'assembly') then
+      call raise_error(err, EXIT_INPUT, at // ': *' // sl%text(2:l(1)) // ': parts, instances and ' // &
+        'assemblies are not read (instance transformations would be lost): write a flat input file ' // &
+        '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
+      return
+    end if
     if (kw == 'include') then
       ! textual inclusion: the current block goes on into the included file,
       ! which may hold just its data lines

@@ -13,7 +13,7 @@ module raccord_mesh_check
   use raccord_strings, only: str, lower
   use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key
   use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, &
-    nodes_per_element, side_nodes
+    nodes_per_element, side_nodes, element_name
   use raccord_mesh_draft, only: mesh_draft_t, where_text
   use raccord_mesh_quality, only: check_element_shape, SHAPE_OK, SHAPE_CLOCKWISE, DEGENERATE_RTOL
   implicit none
@@ -43,6 +43,8 @@ contains
     call build_elements(d, node_map, new_node, mesh, err)
     if (err%failed()) return
     call check_shapes(d, mesh, err)
+    if (err%failed()) return
+    call check_shared_sides(d, mesh, err)
     if (err%failed()) return
     call build_elem_sets(d, elem_map, mesh, err)
     if (err%failed()) return
@@ -173,6 +175,53 @@ contains
       return
     end do
   end subroutine check_shapes
+
+  !> Two elements that share a side (the same two corners) must share all
+  !> of it: both without a mid-side node (Q4-Q4) or both with the same one
+  !> (Q8-Q8). A Q8 beside a Q4 leaves its mid-side node hanging, free to
+  !> open a gap the Q4 does not follow, and was accepted without a word.
+  subroutine check_shared_sides(d, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(mesh_t), intent(in) :: mesh
+    type(error_t), intent(inout) :: err
+    type(int_map_t) :: side_map
+    integer :: e, s, prev, other, mine, theirs, loc(3)
+    character(len=:), allocatable :: what
+    call map_init(side_map, 4*mesh%nelem)
+    do e = 1, mesh%nelem
+      do s = 1, 4
+        loc = side_nodes(mesh%etype(e), s)
+        call map_insert(side_map, pair_key(mesh%conn(loc(1), e), mesh%conn(loc(2), e)), 4*(e - 1) + s, prev)
+        if (prev == 0) cycle
+        other = (prev - 1)/4 + 1
+        mine = mid_of(e, s)
+        theirs = mid_of(other, prev - 4*(other - 1))
+        if (mine == theirs) cycle
+        if (mine == 0 .or. theirs == 0) then
+          what = 'a ' // element_name(mesh%etype(other)) // ' and a ' // element_name(mesh%etype(e)) // &
+            ' share a side, whose mid-side node ' // str(mesh%node_id(max(mine, theirs))) // ' hangs: ' // &
+            'use one element order in each body (all Q4 or all Q8; Gmsh: one Mesh.ElementOrder)'
+        else
+          what = 'their common side has two different mid-side nodes, ' // str(mesh%node_id(theirs)) // &
+            ' and ' // str(mesh%node_id(mine)) // ': merge them (the mesh is not conforming)'
+        end if
+        call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(e), d%elem_line(e)) // ': elements ' // &
+          str(mesh%elem_id(other)) // ' and ' // str(mesh%elem_id(e)) // ' (side ' // &
+          str(mesh%node_id(mesh%conn(loc(1), e))) // '-' // str(mesh%node_id(mesh%conn(loc(2), e))) // '): ' // &
+          what)
+        return
+      end do
+    end do
+  contains
+    !> Mid-side node of side k of element el, 0 for a Q4.
+    integer function mid_of(el, k)
+      integer, intent(in) :: el, k
+      integer :: l(3)
+      l = side_nodes(mesh%etype(el), k)
+      mid_of = 0
+      if (mesh%etype(el) == ELEM_Q8) mid_of = mesh%conn(l(3), el)
+    end function mid_of
+  end subroutine check_shared_sides
 
   subroutine build_elem_sets(d, elem_map, mesh, err)
     type(mesh_draft_t), intent(in) :: d
