@@ -14,7 +14,7 @@ module raccord_output
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
     results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
-    results_delete, results_flush
+    results_delete, results_flush, results_verify
   use raccord_history_file, only: history_file_t, history_open, history_write, history_close, history_bytes, &
     history_suspend, history_resume
   use raccord_contact_pair, only: contact_pair_t
@@ -22,6 +22,7 @@ module raccord_output
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file, file_size, truncate_file
   use raccord_machine, only: physical_memory_bytes
+  use raccord_h5_superblock, only: h5_clear_write_flags
   use raccord_deck, only: write_scene
   implicit none
   private
@@ -235,6 +236,7 @@ contains
     character(len=256) :: msg
     integer :: k, n, ios
     integer(i8) :: bytes
+    logical :: cleared, ok
 
     call prepare_outputs(out, scene, model, plan, pairs, stem, err)
     if (err%failed()) return
@@ -272,7 +274,14 @@ contains
       fields = [character(len=16) :: fields, 'stress']
       ncomps = [ncomps, 4]
     end if
+    ! A run killed while writing leaves the file marked open for writing
+    ! (raccord_h5_superblock); this run holds the stem's lock, so it is not.
+    call h5_clear_write_flags(stem // '.h5.part', cleared, ok)
+    if (cleared) call log_info('restart', stem // '.h5.part was left marked as open for writing (the run ' // &
+      'was killed): mark cleared')
     call results_resume(out%res, stem, model%nnode, result_blocks(model), fields, ncomps, mark%frames_written, err)
+    if (err%failed()) return
+    call results_verify(out%res, err)     ! checksums of what is continued
     if (err%failed()) return
     out%is_open = .true.
     do k = 1, size(pairs)

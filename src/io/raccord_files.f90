@@ -7,14 +7,15 @@
 !> message needs to say how to fix it.
 module raccord_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_char, c_associated, &
-    c_f_pointer, c_long, c_size_t
+    c_f_pointer, c_long, c_size_t, c_int8_t
   use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_IO
+  use raccord_crc32, only: crc32_t, crc_add, crc_value
   implicit none
   private
 
   public :: rename_file, make_directory, file_exists, delete_file, file_size, truncate_file
-  public :: write_failure_reason
+  public :: write_failure_reason, crc_of_file
 
   !> access(2) mode "does the file exist".
   integer(c_int), parameter :: F_OK = 0_c_int
@@ -74,6 +75,14 @@ module raccord_files
       type(c_ptr), value :: fp
       integer(c_size_t) :: written
     end function c_fwrite
+
+    function c_fread(buf, size, n, fp) bind(C, name='fread') result(got)
+      import :: c_ptr, c_size_t, c_int8_t
+      integer(c_int8_t), intent(out) :: buf(*)
+      integer(c_size_t), value :: size, n
+      type(c_ptr), value :: fp
+      integer(c_size_t) :: got
+    end function c_fread
 
     function c_fflush(fp) bind(C, name='fflush') result(rc)
       import :: c_int, c_ptr
@@ -212,6 +221,38 @@ contains
     if (len(reason) == 0) reason = 'the folder "' // dir // '" takes a 64 KiB test file, so the failure may ' // &
       'have passed (was the disk nearly full?)'
   end function write_failure_reason
+
+  !> CRC-32 of the first `bytes` bytes of a file, or -1 when it cannot be
+  !> read or is shorter. Read through C stdio: the file may be open on a
+  !> Fortran unit of this run (a running history), which a second Fortran
+  !> unit may not open.
+  function crc_of_file(path, bytes) result(crc)
+    character(len=*), intent(in) :: path
+    integer(i8), intent(in) :: bytes
+    integer(i8) :: crc
+    integer, parameter :: block = 65536
+    integer(c_int8_t), allocatable :: buf(:)
+    type(crc32_t) :: c
+    type(c_ptr) :: fp
+    integer(i8) :: done, n
+    integer(c_size_t) :: got
+    integer(c_int) :: rc
+    crc = -1
+    if (bytes < 0) return
+    fp = c_fopen(c_path(path), c_path('rb'))
+    if (.not. c_associated(fp)) return
+    allocate(buf(block))
+    done = 0
+    do while (done < bytes)
+      n = min(int(block, i8), bytes - done)
+      got = c_fread(buf, 1_c_size_t, int(n, c_size_t), fp)
+      if (got /= int(n, c_size_t)) exit
+      call crc_add(c, buf(1:n))
+      done = done + n
+    end do
+    rc = c_fclose(fp)
+    if (done == bytes) crc = crc_value(c)
+  end function crc_of_file
 
   ! --- private -----------------------------------------------------------
 
