@@ -39,6 +39,7 @@ program raccord_main
     stop_reason, checkpoint_due, note_checkpoint
   use raccord_files, only: make_directory, file_exists, delete_file
   use raccord_run_lock, only: take_run_lock, drop_run_lock
+  use raccord_threads, only: wait_passively_if_oversubscribed
   implicit none
 
   interface
@@ -71,6 +72,7 @@ program raccord_main
   integer(i8) :: first_step
 
   ! Phase 0: what the user asked for; stop signals ask for a checkpoint.
+  call wait_passively_if_oversubscribed()    ! may restart the program (raccord_threads)
   call start_run_control(control)
   call parse_command_line(cli, err)
   if (err%failed()) call finish(err)

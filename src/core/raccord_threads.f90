@@ -7,15 +7,36 @@
 !> a count above the processors this process may run on is capped at that
 !> number with a warning (doc/user-guide.md, "What raccord guarantees").
 module raccord_threads
+  use, intrinsic :: iso_c_binding, only: c_char, c_int, c_ptr, c_loc, c_null_char, c_null_ptr
   use raccord_log, only: log_warn
   use raccord_strings, only: str
   implicit none
   private
 
+  !> A NUL-terminated argument for execv.
+  type :: c_string_t
+    character(kind=c_char, len=:), allocatable :: s
+  end type c_string_t
+
   !> Longest thread count taken as a number; anything longer is absurd.
   integer, parameter :: max_digits = 6
 
-  public :: requested_thread_count, parse_thread_count
+  public :: requested_thread_count, parse_thread_count, wait_passively_if_oversubscribed
+
+  interface
+    function c_setenv(name, value, overwrite) bind(C, name='setenv') result(rc)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: name(*), value(*)
+      integer(c_int), value :: overwrite
+      integer(c_int) :: rc
+    end function c_setenv
+    function c_execv(path, argv) bind(C, name='execv') result(rc)
+      import :: c_char, c_int, c_ptr
+      character(kind=c_char), intent(in) :: path(*)
+      type(c_ptr), intent(in) :: argv(*)
+      integer(c_int) :: rc
+    end function c_execv
+  end interface
 
 contains
 
@@ -44,6 +65,56 @@ contains
     end if
     !$ call omp_set_num_threads(n)
   end function requested_thread_count
+
+  !> More threads asked for than processors: the user shares the machine,
+  !> where spinning threads (libgomp's default wait policy) burn the time
+  !> slices the others need (1000 threads on 2 cores: minutes instead of
+  !> 0.6 s). The wait policy is read once, when the OpenMP runtime starts,
+  !> so the program restarts itself (execv of /proc/self/exe, same
+  !> arguments) with OMP_WAIT_POLICY=PASSIVE; the count is then capped by
+  !> requested_thread_count. Nothing happens when the user set
+  !> OMP_WAIT_POLICY or GOMP_SPINCOUNT, when the count fits the processors,
+  !> or without OpenMP; if execv fails, the run goes on as it is.
+  !> Called first thing by the main program.
+  subroutine wait_passively_if_oversubscribed()
+    !$ use omp_lib, only: omp_get_num_procs
+    integer :: length, status, n, k, nargs
+    character(len=:), allocatable :: text, why
+    type(c_string_t), allocatable, target :: args(:)
+    type(c_ptr), allocatable :: argv(:)
+    integer(c_int) :: rc
+    logical :: threaded
+    threaded = .false.
+    !$ threaded = .true.
+    if (.not. threaded) return
+    call get_environment_variable('OMP_NUM_THREADS', length=length, status=status)
+    if (status /= 0 .or. length == 0) return
+    allocate(character(len=length) :: text)
+    call get_environment_variable('OMP_NUM_THREADS', text)
+    call parse_thread_count(text, n, why)
+    if (len(why) == 0) then
+      !$ if (n <= omp_get_num_procs()) return
+    else if (why /= 'is far too large') then
+      return
+    end if
+    call get_environment_variable('OMP_WAIT_POLICY', length=length, status=status)
+    if (status == 0) return
+    call get_environment_variable('GOMP_SPINCOUNT', length=length, status=status)
+    if (status == 0) return
+    rc = c_setenv('OMP_WAIT_POLICY' // c_null_char, 'PASSIVE' // c_null_char, 0_c_int)
+    if (rc /= 0) return
+    nargs = command_argument_count()
+    allocate(args(0:nargs), argv(0:nargs + 1))
+    do k = 0, nargs
+      call get_command_argument(k, length=length)
+      allocate(character(len=length + 1) :: args(k)%s)
+      call get_command_argument(k, args(k)%s(1:length))
+      args(k)%s(length + 1:length + 1) = c_null_char
+      argv(k) = c_loc(args(k)%s)
+    end do
+    argv(nargs + 1) = c_null_ptr
+    rc = c_execv('/proc/self/exe' // c_null_char, argv)
+  end subroutine wait_passively_if_oversubscribed
 
   !> The first entry of an OMP_NUM_THREADS value ("4" or "4,2"): a whole
   !> number >= 1. Otherwise n = 1 and why says what is wrong (empty when
