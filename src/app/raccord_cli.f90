@@ -16,6 +16,7 @@ module raccord_cli
     character(len=:), allocatable :: scene_path
     character(len=:), allocatable :: output_dir   !< overrides &run output_dir when set
     character(len=:), allocatable :: restart_path !< checkpoint to continue from (--restart)
+    character(len=:), allocatable :: verify_path  !< results or checkpoint file to check (--verify)
     real(wp) :: wall_clock = 0.0_wp              !< --wall-clock or RACCORD_WALLCLOCK_SECONDS; 0 = not given
     character(len=:), allocatable :: wall_clock_source  !< where wall_clock came from, for the log
   end type cli_t
@@ -66,6 +67,13 @@ contains
             'file a stopped run wrote')
           return
         end if
+      case ('--verify')
+        call option_value(k, n, arg, 'a results or checkpoint file: raccord --verify FILE', cli%verify_path, err)
+        if (err%failed()) return
+        if (len_trim(cli%verify_path) == 0) then
+          call raise_error(err, EXIT_USAGE, 'option --verify is given an empty file name')
+          return
+        end if
       case ('--wall-clock')
         call option_value(k, n, arg, 'seconds: raccord --wall-clock 3600 SCENE', value, err)
         if (err%failed()) return
@@ -92,6 +100,13 @@ contains
       deallocate(arg)
     end do
     if (cli%help .or. cli%version) return
+    if (allocated(cli%verify_path)) then
+      if (allocated(cli%scene_path) .or. allocated(cli%restart_path) .or. cli%check) then
+        call raise_error(err, EXIT_USAGE, '--verify checks one file and runs nothing: give it alone ' // &
+          '(raccord --verify FILE)')
+      end if
+      return
+    end if
     if (.not. allocated(cli%scene_path) .and. .not. allocated(cli%restart_path)) then
       call raise_error(err, EXIT_USAGE, 'no scene given; usage: raccord [options] SCENE (raccord --help)')
       return
@@ -169,6 +184,8 @@ contains
       '  --restart CHECKPOINT  continue the run that wrote CHECKPOINT, with its results' // nl // &
       '                  files (SCENE defaults to the deck it was written for; it must' // nl // &
       '                  resolve to the same scene)' // nl // &
+      '  --verify FILE   check a results (.h5, .h5.part) or checkpoint file: read back' // nl // &
+      '                  every dataset and its checksums; exit 0 intact, 2 damaged' // nl // &
       '  -q, --quiet     progress and info to the log file only' // nl // &
       '  -v, --verbose   debug messages' // nl // &
       '  -V, --version   print the version' // nl // &

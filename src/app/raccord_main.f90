@@ -40,6 +40,7 @@ program raccord_main
   use raccord_files, only: make_directory, file_exists, delete_file
   use raccord_run_lock, only: take_run_lock, drop_run_lock
   use raccord_threads, only: wait_passively_if_oversubscribed
+  use raccord_verify, only: verify_file
   implicit none
 
   interface
@@ -84,6 +85,7 @@ program raccord_main
     write(output_unit, '(a)') 'raccord ' // raccord_version_string
     stop
   end if
+  if (allocated(cli%verify_path)) call verify_only()
   if (cli%quiet) call log_set_quiet(.true.)
   if (cli%verbose) call log_set_level(LEVEL_DEBUG)
   restart = allocated(cli%restart_path)
@@ -321,6 +323,16 @@ contains
       '. The run is unstable: reduce &time safety or dt, check the material data and loads.')
     call finish(err)
   end subroutine guard_finite
+
+  !> raccord --verify FILE: check the file, print what was checked, exit
+  !> 0 (intact) or with the error (2: damaged).
+  subroutine verify_only()
+    character(len=:), allocatable :: report
+    call verify_file(cli%verify_path, report, err)
+    if (err%failed()) call finish(err)
+    write(output_unit, '(a)') report
+    stop
+  end subroutine verify_only
 
   !> Stop on an error: close any open result files as incomplete, log the
   !> message, exit with the error's code.

@@ -22,7 +22,7 @@ module raccord_h5_verify
   !> Deepest group nesting walked (raccord's files are a few levels deep).
   integer, parameter :: MAX_DEPTH = 16
 
-  public :: h5_verify_tree
+  public :: h5_verify_tree, h5_read_raw
 
 contains
 
@@ -79,20 +79,30 @@ contains
     integer(hid_t), intent(in) :: loc
     character(len=*), intent(in) :: path, where
     type(error_t), intent(inout) :: err
+    integer(c_int8_t), allocatable :: bytes(:)
+    logical :: ok
+    call h5_read_raw(loc, path, bytes, ok)
+    if (.not. ok) call raise_error(err, EXIT_INPUT, where // ' is damaged: the dataset ' // path // &
+      ' cannot be read back (checksum or layout error)')
+  end subroutine read_dataset
+
+  !> The stored bytes of a whole dataset (file type, no conversion), with
+  !> the library's checksums checked and, for a text, its crc32 attribute.
+  !> ok is false when anything fails (bytes then unallocated or partial).
+  subroutine h5_read_raw(loc, path, bytes, ok)
+    integer(hid_t), intent(in) :: loc
+    character(len=*), intent(in) :: path
+    integer(c_int8_t), allocatable, target, intent(out) :: bytes(:)
+    logical, intent(out) :: ok
     integer(hid_t) :: dset, dtype, space
     integer(size_t) :: tsize
     integer(hsize_t) :: npoints
-    integer(c_int8_t), allocatable, target :: buf(:)
     type(c_ptr) :: ptr
-    integer :: hdferr, cerr
+    integer :: hdferr, cerr, stat
     integer(i8), parameter :: max_bytes = 2_i8**34
-    logical :: ok
     ok = .false.
     call h5dopen_f(loc, path, dset, hdferr)
-    if (hdferr /= 0) then
-      call raise_error(err, EXIT_INPUT, where // ' is damaged: the dataset ' // path // ' cannot be opened')
-      return
-    end if
+    if (hdferr /= 0) return
     steps: block
       call h5dget_type_f(dset, dtype, hdferr)
       if (hdferr /= 0) exit steps
@@ -112,19 +122,21 @@ contains
         call h5tclose_f(dtype, cerr)
         exit steps
       end if
-      allocate(buf(max(1_i8, int(npoints, i8)*int(tsize, i8))))
+      allocate(bytes(int(npoints, i8)*int(tsize, i8)), stat=stat)
+      if (stat /= 0) then
+        call h5tclose_f(dtype, cerr)
+        exit steps
+      end if
       if (npoints > 0) then
-        ptr = c_loc(buf)
+        ptr = c_loc(bytes)
         call h5dread_f(dset, dtype, ptr, hdferr)
       end if
       call h5tclose_f(dtype, cerr)
       ok = hdferr == 0
-      if (ok) call check_text_crc(dset, buf, ok)
+      if (ok) call check_text_crc(dset, bytes, ok)
     end block steps
     call h5dclose_f(dset, cerr)
-    if (.not. ok) call raise_error(err, EXIT_INPUT, where // ' is damaged: the dataset ' // path // &
-      ' cannot be read back (checksum or layout error)')
-  end subroutine read_dataset
+  end subroutine h5_read_raw
 
   !> A text dataset carries its CRC-32 as the attribute crc32
   !> (h5_write_text): the bytes read must have it.
