@@ -37,7 +37,7 @@ program raccord_main
   use raccord_checkpoint, only: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path
   use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, note_step, must_stop, &
     stop_reason, checkpoint_due, note_checkpoint
-  use raccord_files, only: make_directory, file_exists, delete_file
+  use raccord_files, only: make_directory, file_exists, delete_file, write_failure_reason
   use raccord_run_lock, only: take_run_lock, drop_run_lock
   use raccord_threads, only: wait_passively_if_oversubscribed
   use raccord_verify, only: verify_file
@@ -339,9 +339,18 @@ contains
   subroutine finish(e)
     type(error_t), intent(in) :: e
     type(error_t) :: close_err
+    character(len=:), allocatable :: message, probe
+    logical :: takes_writes
     if (.not. e%failed()) return
-    call close_outputs(out, .false., e%message, close_err)
-    call log_error('raccord', e%message)
+    message = e%message
+    ! A write that failed during the run: say what the file system says
+    ! (a full disk) when a probe write into the output folder fails too.
+    if (e%code == EXIT_IO .and. allocated(scene%run%output_dir)) then
+      probe = write_failure_reason(scene%run%output_dir, takes_writes)
+      if (.not. takes_writes .and. index(message, probe) == 0) message = message // ' [' // probe // ']'
+    end if
+    call close_outputs(out, .false., message, close_err)
+    call log_error('raccord', message)
     if (e%code /= EXIT_USAGE .and. e%code /= EXIT_INPUT) &
       call log_error('raccord', 'run stopped; result files (if any) are marked incomplete')
     if (close_err%failed()) call log_error('raccord', close_err%message)

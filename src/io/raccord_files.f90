@@ -184,8 +184,9 @@ contains
   !> (HDF5 does not pass the system's reason on): the folder is missing, or
   !> not writable, or a probe of 64 KiB written and flushed there fails with
   !> the system's own words (a full disk: "No space left on device").
-  function write_failure_reason(folder) result(reason)
+  function write_failure_reason(folder, takes_writes) result(reason)
     character(len=*), intent(in) :: folder
+    logical, intent(out), optional :: takes_writes   !< the probe write went through
     character(len=:), allocatable :: reason, dir, probe
     character(kind=c_char, len=1024) :: block
     type(c_ptr) :: fp
@@ -193,6 +194,7 @@ contains
     integer :: k
     dir = trim(folder)
     if (len(dir) == 0) dir = '.'
+    if (present(takes_writes)) takes_writes = .false.
     if (.not. is_directory(dir)) then
       reason = 'the folder "' // dir // '" does not exist (or is not a folder)'
       return
@@ -218,8 +220,11 @@ contains
       ' (full disk or quota?): free some space or write elsewhere (--output)'
     rc = c_fclose(fp)
     rc = c_unlink(c_path(probe))
-    if (len(reason) == 0) reason = 'the folder "' // dir // '" takes a 64 KiB test file, so the failure may ' // &
-      'have passed (was the disk nearly full?)'
+    if (len(reason) == 0) then
+      reason = 'the folder "' // dir // '" takes a 64 KiB test file, so the failure may have passed (was ' // &
+        'the disk nearly full?)'
+      if (present(takes_writes)) takes_writes = .true.
+    end if
   end function write_failure_reason
 
   !> CRC-32 of the first `bytes` bytes of a file, or -1 when it cannot be

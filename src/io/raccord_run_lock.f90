@@ -10,6 +10,7 @@
 module raccord_run_lock
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   use raccord_error, only: error_t, raise_error, EXIT_IO
+  use raccord_files, only: write_failure_reason
   implicit none
   private
 
@@ -66,8 +67,8 @@ contains
     path = run_lock_name(stem)
     fd = c_creat(path // c_null_char, LOCK_MODE)
     if (fd < 0) then
-      call raise_error(err, EXIT_IO, 'cannot create the run lock ' // path // ': check that the output ' // &
-        'folder is writable and not full')
+      call raise_error(err, EXIT_IO, 'cannot create the run lock ' // path // ': ' // &
+        write_failure_reason(path_folder(path)))
       return
     end if
     if (c_flock(fd, ior(LOCK_EX, LOCK_NB)) /= 0) then
@@ -79,6 +80,17 @@ contains
     held_fd = fd
     held_path = path
   end subroutine take_run_lock
+
+  !> The folder part of a path ('.' when it has none).
+  pure function path_folder(path) result(dir)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: dir
+    integer :: k
+    k = index(path, '/', back=.true.)
+    dir = '.'
+    if (k > 1) dir = path(1:k-1)
+    if (k == 1) dir = '/'
+  end function path_folder
 
   !> Remove the lock file and release the lock (at the end of the run).
   subroutine drop_run_lock()
