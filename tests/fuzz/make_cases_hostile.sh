@@ -154,6 +154,46 @@ edit_lines "$c/plate_q8.msh" 'p == 1 { print $0 + 1; p = 2; next } $0 == "$Nodes
   $1 == 15 && $2 == 16 { $13 = 29 } { print }'
 set_args -o out "$d"
 set_names "mid-side"
+# A 2:1 refinement without transition: node 5 lies on the right side of
+# the coarse element 1, and is a corner of the two fine elements only.
+new_case meshmix.hanging-q4 meshmix bad 2 "a coarse Q4 beside two fine ones: node 5 hangs on its side 2-3"
+cat > "$c/hang.msh" << 'EOF'
+$MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+1 2 "left"
+2 1 "body"
+$EndPhysicalNames
+$Nodes
+8
+1 0 0 0
+2 2 0 0
+3 2 2 0
+4 0 2 0
+5 2 1 0
+6 3 0 0
+7 3 1 0
+8 3 2 0
+$EndNodes
+$Elements
+4
+1 3 2 1 1 1 2 3 4
+2 3 2 1 1 2 6 7 5
+3 3 2 1 1 5 7 8 3
+4 1 2 2 4 4 1
+$EndElements
+EOF
+cat > "$c/hang.nml" << 'EOF'
+&mesh file = 'hang.msh' /
+&body name = 'body', elset = 'body', young = 200000.0, poisson = 0.3, density = 7.8e-9 /
+&boundary set = 'left', type = 'fixed', components = 'xy' /
+&time t_end = 1.0e-6 /
+EOF
+set_args -o out hang.nml
+set_names "hangs"
+
 part_case() {  # part_case NAME NOTE AWK
   new_case "meshmix.plate.inp.$1" meshmix bad 2 "$2"
   d=$(seed_pair plate.inp)
