@@ -13,6 +13,9 @@ module raccord_text_reader
   public :: open_text_file, close_text_file, read_line, here, check_count
   public :: split_fields, parse_int, parse_real
 
+  !> Longest line read (Gmsh and Abaqus lines are far shorter).
+  integer, parameter :: MAX_LINE = 1000000
+
   !> An open text file and the number of the last line read.
   type, public :: text_file_t
     character(len=:), allocatable :: path
@@ -95,7 +98,7 @@ contains
     character(len=:), allocatable, intent(out) :: line
     logical, intent(out) :: eof
     type(error_t), intent(inout) :: err
-    character(len=256) :: buf
+    character(len=4096) :: buf
     character(len=512) :: msg
     integer :: ios, nread
     line = ''
@@ -112,6 +115,13 @@ contains
       read(tf%unit, '(a)', advance='no', size=nread, iostat=ios, iomsg=msg) buf
       if (ios == 0) then
         line = line // buf(1:nread)
+        ! /dev/zero or a binary file would otherwise be read without end
+        if (len(line) > MAX_LINE) then
+          call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no + 1) // ': a line longer than ' // &
+            str(MAX_LINE) // ' characters: this is not a mesh text file')
+          eof = .true.
+          return
+        end if
         cycle
       end if
       if (is_iostat_eor(ios)) then

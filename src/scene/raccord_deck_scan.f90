@@ -292,7 +292,8 @@ contains
     logical, intent(out) :: at_end
     integer, intent(out) :: ios
     character(len=*), intent(inout) :: msg
-    character(len=256) :: buf
+    character(len=4096) :: buf
+    integer, parameter :: max_line = 1000000
     integer :: n
     line = ''
     at_end = .false.
@@ -300,6 +301,13 @@ contains
       read(u, '(a)', advance='no', size=n, iostat=ios, iomsg=msg) buf
       if (ios > 0) return
       line = line // buf(1:n)
+      ! A line has a length limit: /dev/zero or a binary file given as the
+      ! deck would otherwise be read into memory without end.
+      if (len(line) > max_line) then
+        ios = 1
+        msg = 'a line longer than ' // str(max_line) // ' characters: not a text deck'
+        return
+      end if
       if (ios == iostat_eor) exit
       if (ios == iostat_end) then
         ! A last line without a newline still counts as a line.

@@ -62,6 +62,17 @@ for d in plate.nml contact.nml; do
   set_names history_every
 done
 
+# Files without end of line: /dev/zero as the deck and as the mesh.
+new_case sizes.deck-dev-zero sizes bad 2 "the deck is /dev/zero (one endless line)"
+set_args -o out /dev/zero
+set_names "longer than"
+new_case sizes.mesh-dev-zero sizes bad 2 "&mesh file = '/dev/zero', format = 'gmsh'"
+cp "$seeds/plate.nml" "$c/"
+set_key "$c/plate.nml" file "'/dev/zero'"
+set_key "$c/plate.nml" format "'gmsh'"
+set_args -o out plate.nml
+set_names "longer than"
+
 # ---------------------------------------------------------------- overflow
 over_case() {  # over_case NAME DECK KEY VALUE
   new_case "overflow.$2.$1" overflow bad 2 "$2: $3 = $4"
