@@ -5,7 +5,8 @@
 !> cores makes every parallel region wait on threads that cannot run. Here
 !> the value is read as text, a bad one is replaced by 1 with a warning, and
 !> a count above the processors this process may run on is capped at that
-!> number with a warning (doc/user-guide.md, "What raccord guarantees").
+!> number with a warning, the run then waiting passively instead of
+!> spinning (doc/user-guide.md, "What raccord guarantees").
 module raccord_threads
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_ptr, c_loc, c_null_char, c_null_ptr
   use raccord_log, only: log_warn
@@ -92,11 +93,8 @@ contains
     allocate(character(len=length) :: text)
     call get_environment_variable('OMP_NUM_THREADS', text)
     call parse_thread_count(text, n, why)
-    if (len(why) == 0) then
-      !$ if (n <= omp_get_num_procs()) return
-    else if (why /= 'is far too large') then
-      return
-    end if
+    if (len(why) > 0) return                 ! runs on 1 thread
+    !$ if (n <= omp_get_num_procs()) return
     call get_environment_variable('OMP_WAIT_POLICY', length=length, status=status)
     if (status == 0) return
     call get_environment_variable('GOMP_SPINCOUNT', length=length, status=status)
