@@ -97,8 +97,9 @@ case_stem() { echo "$1" | awk '{ f = $NF; sub(/.*\//, "", f); sub(/\.[^.]*$/, ""
 # then damage one of its files as damage= says. Sets damage_failed on failure.
 damage_setup() {
   ddir=$1
-  deck=$(meta deck "$ddir"); dstem=${deck%.nml}
-  set -- $(meta damage "$ddir")
+  deck=$m_deck; dstem=${deck%.nml}
+  # shellcheck disable=SC2086
+  set -- $m_damage
   target=$ddir/out/$dstem$1; r=$2; mode=$3
   (cd "$ddir" && timeout -k 5 "$limit" "$raccord" -q --wall-clock 0.001 -o out "$deck" > prerun.txt 2>&1)
   pcode=$?
@@ -123,7 +124,7 @@ damage_setup() {
 # damage_same DIR STEM: the restarted results must equal those of an
 # uninterrupted run of the same deck (run once per deck, kept in ref/).
 damage_same() {
-  sdir=$1; sstem=$2; deck=$(meta deck "$sdir")
+  sdir=$1; sstem=$2; deck=$m_deck
   ref=$work/ref/$(cat "$sdir/$deck" | cksum | tr ' ' _)
   if [ ! -d "$ref" ]; then
     mkdir -p "$ref" && cp "$sdir/$deck" "$sdir"/*.msh "$sdir"/*.inp "$ref/" 2> /dev/null
@@ -140,14 +141,34 @@ damage_same() {
   fi
 }
 
-is_known() { [ -f "$known_list" ] && awk -v n="$1" '{ sub(/#.*/, "") } $1 == n { f = 1 } END { exit !f }' "$known_list"; }
-meta() { sed -n "s/^$1=//p" "$2/case.txt"; }
+# The known failures, read once: " name name ... ".
+known=" "
+[ -f "$known_list" ] && known=" $(awk '{ sub(/#.*/, "") } NF { printf "%s ", $1 }' "$known_list")"
+is_known() { case $known in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
+# load_meta DIR: the fields of DIR/case.txt into m_<field>, with shell
+# builtins only (a sed per field and case cost more than the runs).
+load_meta() {
+  m_family=; m_kind=; m_expect=; m_args=; m_setup=; m_env=; m_names=; m_deck=; m_damage=
+  while IFS= read -r line; do
+    case $line in
+      family=*) m_family=${line#family=} ;;
+      kind=*) m_kind=${line#kind=} ;;
+      expect=*) m_expect=${line#expect=} ;;
+      args=*) m_args=${line#args=} ;;
+      setup=*) m_setup=${line#setup=} ;;
+      env=*) m_env=${line#env=} ;;
+      names=*) m_names=${line#names=} ;;
+      deck=*) m_deck=${line#deck=} ;;
+      damage=*) m_damage=${line#damage=} ;;
+    esac
+  done < "$1/case.txt"
+}
 
 # check_case DIR: run the case in DIR; set $reason (empty = passed) and $outcome.
 check_case() {
   dir=$1
-  family=$(meta family "$dir"); kind=$(meta kind "$dir"); expect=$(meta expect "$dir")
-  args=$(meta args "$dir"); setup=$(meta setup "$dir")
+  load_meta "$dir"
+  family=$m_family; kind=$m_kind; expect=$m_expect; args=$m_args; setup=$m_setup
   reason=""; outcome=bad
   case $setup in
     not_writable)
@@ -184,7 +205,7 @@ check_case() {
       damage_setup "$dir" || { reason=$damage_failed; return; }
       ;;
   esac
-  envv=$(meta env "$dir")
+  envv=$m_env
   [ -n "$envv" ] || envv=FUZZ_NO_ENV=1
   eval "set -- $args"
   (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=$bt exec env "$envv" timeout -k 5 "$limit" "$raccord" "$@" > stdout.txt 2> stderr.txt)
@@ -225,7 +246,7 @@ check_case() {
         outcome=valid
         stem=$(echo "$args" | awk '{ f = $NF; sub(/.*\//, "", f); sub(/\.[^.]*$/, "", f); print f }')
         odir=$(echo "$args" | awk '{ for (i = 1; i < NF; i++) if ($i == "-o" || $i == "--output") print $(i + 1) }')
-        if [ "$setup" = damage ]; then stem=$(meta deck "$dir"); stem=${stem%.nml}; odir=out; fi
+        if [ "$setup" = damage ]; then stem=${m_deck%.nml}; odir=out; fi
         for ext in h5 xmf history.txt; do
           [ -s "$dir/$odir/$stem.$ext" ] || reason="$reason exit 0 but $odir/$stem.$ext missing;"
         done
@@ -251,7 +272,7 @@ check_case() {
   if ! grep -aq '^ERROR \[[^]]*\] *[^ ]' "$err"; then
     reason="${reason:+$reason; }no 'ERROR [...] message' line on stderr"
   else
-    names=$(meta names "$dir")
+    names=$m_names
     if [ -n "$names" ] && ! grep -a '^ERROR \[' "$err" | grep -qiF -- "$names"; then
       reason="${reason:+$reason; }the ERROR line does not name '$names': $(grep -a -m1 '^ERROR \[' "$err")"
     fi
@@ -268,7 +289,7 @@ for dir in "$cases"/*/; do
   name=$(basename "$dir")
   if [ -n "$only" ]; then case $name in *"$only"*) ;; *) continue ;; esac; fi
   check_case "$dir"
-  echo "$(meta family "$dir") $outcome ${reason:+fail}" >> "$work/families.txt"
+  echo "$m_family $outcome ${reason:+fail}" >> "$work/families.txt"
   if [ "$outcome" = skipped ]; then
     nskip=$((nskip + 1)); echo "skip $name: $(cat "$dir/setup.txt")"; continue
   fi
@@ -277,8 +298,8 @@ for dir in "$cases"/*/; do
     else nknown_fixed=$((nknown_fixed + 1)); echo "KNOWN FAILURE NOW PASSES $dir: move it out of known_failures.txt"; fi
     continue
   fi
-  if [ -n "$reason" ] && [ "$bt" = 0 ] && [ "$(meta setup "$dir")" = "" ]; then
-    eval "set -- $(meta args "$dir")"
+  if [ -n "$reason" ] && [ "$bt" = 0 ] && [ "$m_setup" = "" ]; then
+    eval "set -- $m_args"
     (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=1 timeout -k 5 "$limit" "$raccord" "$@" > /dev/null 2> stderr.backtrace.txt)
   fi
   if [ -n "$reason" ]; then
