@@ -345,6 +345,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: first, last, step, id
     integer(i8) :: count, most
+    integer(i8), parameter :: min_range = 10000000_i8
     if (nf < 2 .or. nf > 3) then
       call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': a GENERATE line is "first, last[, step]", found ' // &
         str(nf) // ' fields')
@@ -363,17 +364,19 @@ contains
     ! Every generated id must be a node or element defined in the files,
     ! each on a line of its own: a range longer than the items read so far
     ! and the bytes of the files can hold is a damaged count, refused before
-    ! it is expanded (a range of two billion once ran out of memory).
+    ! it is expanded (a range of two billion once ran out of memory). Files
+    ! included later may hold the items: ranges up to min_range ids (some
+    ! hundred MB at most) are always expanded.
     count = (int(last, i8) - int(first, i8))/int(step, i8) + 1_i8
     if (st%block == BLK_NSET) then
-      most = max(int(d%nnode, i8), st%bytes_read/2_i8)
+      most = max(int(d%nnode, i8), st%bytes_read/2_i8, min_range)
     else
-      most = max(int(d%nelem, i8), st%bytes_read/2_i8)
+      most = max(int(d%nelem, i8), st%bytes_read/2_i8, min_range)
     end if
     if (count > most) then
       call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': GENERATE ' // str(first) // ', ' // str(last) // &
         ', ' // str(step) // ' makes ' // str(count) // ' ids, more than the ' // str(most) // &
-        ' the mesh files can define: check the range')
+        ' a range may hold here (the larger of the items and lines read so far and 10^7): check the range')
       return
     end if
     do id = first, last, step
