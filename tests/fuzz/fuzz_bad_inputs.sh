@@ -38,6 +38,14 @@
 # .part / .incomplete, no ERROR line, no crash). A mutation of comments only
 # ("valid") must run like that.
 #
+# Special runs (setup= in case.txt, see make_cases.sh and
+# make_cases_hostile.sh): not_writable, disk_full and disk_full_now (a
+# tmpfs, root only), locked (flock(1) holds <stem>.lock during the run),
+# damage (a run stopped with --wall-clock, one of its files damaged, then
+# the case's --restart; an exit 0 must reproduce an uninterrupted run, by
+# cmp and h5diff). env= sets one environment variable for the run; args
+# are split as the shell would split them ('' is an empty argument).
+#
 # Known failures (known_failures.txt next to this script: one case name a
 # line, "#" comments naming the bug) are run and reported, but do not count
 # among the failures; one that passes is reported so it can be moved back.
