@@ -16,7 +16,7 @@
 !> checkpoint that exists is complete; a killed write leaves the previous
 !> checkpoint in place.
 module raccord_checkpoint
-  use hdf5, only: hid_t, h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F
+  use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
   use raccord_strings, only: str
@@ -24,13 +24,14 @@ module raccord_checkpoint
   use raccord_version, only: raccord_version_string
   use raccord_scene, only: scene_t
   use raccord_deck, only: write_scene
-  use raccord_paths, only: absolute_path
+  use raccord_paths, only: absolute_path, path_dir
   use raccord_state, only: state_t
   use raccord_contact_pair, only: contact_pair_t
   use raccord_output, only: output_mark_t
-  use raccord_files, only: rename_file, delete_file, file_exists
-  use raccord_h5, only: h5_acquire, h5_release, h5_write_real, h5_write_int, h5_write_text, h5_attr_text, &
+  use raccord_files, only: rename_file, delete_file, file_exists, write_failure_reason, crc_of_file
+  use raccord_h5, only: h5_acquire, h5_release, h5_create_file, h5_write_real, h5_write_int, h5_write_text, h5_attr_text, &
     h5_attr_int, h5_link_exists
+  use raccord_crc32, only: crc32_t, crc_add, crc_value
   use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8
   implicit none
   private
@@ -38,7 +39,7 @@ module raccord_checkpoint
   public :: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path, scene_identity
 
   !> Version of the checkpoint layout; a checkpoint of another version is refused.
-  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 1
+  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 2
   character(len=*), parameter :: FORMAT_NAME = 'raccord checkpoint'
   !> Keys that do not change the results: a restart may change them.
   character(len=*), parameter :: FREE_KEYS(*) = [character(len=20) :: 'output_dir', 'wall_clock', &
@@ -96,6 +97,7 @@ contains
     character(len=:), allocatable :: part, where, identity, g
     integer(hid_t) :: file
     integer :: hdferr, k
+    integer(i8), allocatable :: file_crc(:)
     type(error_t) :: cerr
 
     if (err%failed()) return
@@ -105,9 +107,9 @@ contains
     where = 'checkpoint "' // part // '"'
     call h5_acquire(err)
     if (err%failed()) return
-    call h5fcreate_f(part, H5F_ACC_TRUNC_F, file, hdferr)
+    call h5_create_file(part, file, hdferr)
     if (hdferr /= 0) then
-      call raise_error(err, EXIT_IO, 'cannot create ' // where // '; check that the folder is writable')
+      call raise_error(err, EXIT_IO, 'cannot create ' // where // ': ' // write_failure_reason(path_dir(part)))
       call h5_release(err)
       return
     end if
@@ -140,6 +142,16 @@ contains
     call h5_write_i8(file, '/output/counters', [int(mark%frames_written, i8), int(mark%nrow, i8), &
       mark%history_bytes], where, err)
     call h5_write_real(file, '/output/history_table', mark%table, where, err)
+    ! Checksums: of the running text files up to their recorded lengths,
+    ! and of everything above (checkpoint_crc), verified by a restart.
+    allocate(file_crc(1 + size(pairs)))
+    file_crc(1) = crc_of_file(stem // '.history.txt.part', mark%history_bytes)
+    do k = 1, size(pairs)
+      file_crc(1 + k) = crc_of_file(stem // '.contact' // str(k) // '.txt.part', mark%profile_bytes(k))
+    end do
+    call h5_write_i8(file, '/output/file_crc', file_crc, where, err)
+    call h5_write_i8(file, '/crc32', [checkpoint_crc(identity, absolute_path(scene%path), state, pairs, mark, &
+      file_crc)], where, err)
     call h5fclose_f(file, hdferr)
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close ' // where // ' (disk full?)')
     call h5_release(cerr)
@@ -263,11 +275,99 @@ contains
       end if
       allocate(mark%table(ncol, mark%nrow))
       call h5_read_real(file, '/output/history_table', mark%table, where, err)
+      if (err%failed()) exit steps
+      call verify_checkpoint(file, path, identity, state, pairs, mark, err)
     end block steps
     call close_checkpoint(file, where, err)
   end subroutine read_checkpoint
 
   ! --- private -----------------------------------------------------------
+
+  !> CRC-32 of what a checkpoint holds, in the order it is written.
+  function checkpoint_crc(identity, scene_path, state, pairs, mark, file_crc) result(crc)
+    character(len=*), intent(in) :: identity, scene_path
+    type(state_t), intent(in) :: state
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(output_mark_t), intent(in) :: mark
+    integer(i8), intent(in) :: file_crc(:)
+    integer(i8) :: crc
+    type(crc32_t) :: c
+    integer :: k
+    call crc_add(c, identity)
+    call crc_add(c, scene_path)
+    call crc_add(c, [state%step, state%nsteps])
+    call crc_add(c, [state%time, state%dt])
+    call crc_add(c, state%u)
+    call crc_add(c, state%u_prev)
+    call crc_add(c, state%v)
+    associate (e => state%energy)
+      call crc_add(c, [e%kinetic, e%internal, e%discrete, e%external, e%damping, e%contact, e%friction, &
+        e%initial, e%balance, e%scale])
+    end associate
+    do k = 1, size(pairs)
+      call crc_add(c, pairs(k)%status)
+      call crc_add(c, pairs(k)%sigma)
+      call crc_add(c, [int(pairs(k)%failed_streak, i8), pairs(k)%failed_total, pairs(k)%iterations_total, &
+        pairs(k)%steps])
+      call crc_add(c, [pairs(k)%residual_max])
+      call crc_add(c, [mark%profile_bytes(k)])
+    end do
+    call crc_add(c, [int(mark%frames_written, i8), int(mark%nrow, i8), mark%history_bytes])
+    call crc_add(c, mark%table)
+    call crc_add(c, file_crc)
+    crc = crc_value(c)
+  end function checkpoint_crc
+
+  !> A checkpoint just read must have the checksum it was written with,
+  !> and the running text files of its run must still hold, up to the
+  !> lengths it recorded, the bytes they held then: a flipped or zeroed
+  !> byte is refused (issue #18), not continued into results that differ
+  !> from an uninterrupted run.
+  subroutine verify_checkpoint(file, path, identity, state, pairs, mark, err)
+    integer(hid_t), intent(in) :: file
+    character(len=*), intent(in) :: path, identity
+    type(state_t), intent(in) :: state
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(output_mark_t), intent(in) :: mark
+    type(error_t), intent(inout) :: err
+    character(len=:), allocatable :: where, scene_path, stem, name
+    integer(i8), allocatable :: file_crc(:)
+    integer(i8) :: stored(1), now
+    integer :: k
+    where = 'checkpoint "' // path // '"'
+    stem = path(1:len(path) - len('.checkpoint.h5'))
+    if (.not. h5_link_exists(file, '/crc32') .or. .not. h5_link_exists(file, '/output/file_crc')) then
+      call raise_error(err, EXIT_INPUT, where // ' has no checksum (written by an older raccord, or damaged): ' // &
+        'run the scene afresh without --restart')
+      return
+    end if
+    allocate(file_crc(1 + size(pairs)))
+    call h5_read_text(file, '/scene_path', scene_path, where, err)
+    call h5_read_i8(file, '/output/file_crc', file_crc, where, err)
+    call h5_read_i8(file, '/crc32', stored, where, err)
+    if (err%failed()) return
+    now = checkpoint_crc(identity, scene_path, state, pairs, mark, file_crc)
+    if (now /= stored(1)) then
+      call raise_error(err, EXIT_INPUT, 'restart refused: ' // where // ' is damaged (its CRC-32 checksum is ' // &
+        str(now) // ', it was written with ' // str(stored(1)) // '): run the scene afresh without --restart')
+      return
+    end if
+    do k = 0, size(pairs)
+      if (k == 0) then
+        name = stem // '.history.txt.part'
+        now = crc_of_file(name, mark%history_bytes)
+      else
+        name = stem // '.contact' // str(k) // '.txt.part'
+        now = crc_of_file(name, mark%profile_bytes(k))
+      end if
+      if (now /= file_crc(1 + k)) then
+        call raise_error(err, EXIT_INPUT, 'restart refused: ' // name // ' is missing, shorter than its ' // &
+          'checkpoint recorded, or damaged (its first bytes no longer have the checksum ' // where // &
+          ' recorded): run the scene afresh without --restart')
+        return
+      end if
+    end do
+  end subroutine verify_checkpoint
 
   !> Open a checkpoint read-only and check its format and version.
   subroutine open_checkpoint(path, file, err)

@@ -16,6 +16,7 @@ module raccord_cli
     character(len=:), allocatable :: scene_path
     character(len=:), allocatable :: output_dir   !< overrides &run output_dir when set
     character(len=:), allocatable :: restart_path !< checkpoint to continue from (--restart)
+    character(len=:), allocatable :: verify_path  !< results or checkpoint file to check (--verify)
     real(wp) :: wall_clock = 0.0_wp              !< --wall-clock or RACCORD_WALLCLOCK_SECONDS; 0 = not given
     character(len=:), allocatable :: wall_clock_source  !< where wall_clock came from, for the log
   end type cli_t
@@ -51,6 +52,11 @@ contains
       case ('-o', '--output')
         call option_value(k, n, arg, 'a folder: raccord --output DIR SCENE', cli%output_dir, err)
         if (err%failed()) return
+        if (len_trim(cli%output_dir) == 0) then
+          call raise_error(err, EXIT_USAGE, 'option ' // arg // ' is given an empty folder name: give a ' // &
+            'folder (. for the current one)')
+          return
+        end if
       case ('--restart')
         call option_value(k, n, arg, 'a checkpoint: raccord --restart DIR/NAME.checkpoint.h5 [SCENE]', &
           cli%restart_path, err)
@@ -59,6 +65,13 @@ contains
             len(cli%restart_path) <= 14) then
           call raise_error(err, EXIT_USAGE, '--restart ' // cli%restart_path // ': give the <name>.checkpoint.h5 ' // &
             'file a stopped run wrote')
+          return
+        end if
+      case ('--verify')
+        call option_value(k, n, arg, 'a results or checkpoint file: raccord --verify FILE', cli%verify_path, err)
+        if (err%failed()) return
+        if (len_trim(cli%verify_path) == 0) then
+          call raise_error(err, EXIT_USAGE, 'option --verify is given an empty file name')
           return
         end if
       case ('--wall-clock')
@@ -77,11 +90,23 @@ contains
             arg // ''' (run raccord once per scene, or use hpc/ sweep scripts)')
           return
         end if
+        if (len_trim(arg) == 0) then
+          call raise_error(err, EXIT_USAGE, 'an empty argument where the scene deck was expected: give ' // &
+            'the path of the deck (raccord --help)')
+          return
+        end if
         cli%scene_path = arg
       end select
       deallocate(arg)
     end do
     if (cli%help .or. cli%version) return
+    if (allocated(cli%verify_path)) then
+      if (allocated(cli%scene_path) .or. allocated(cli%restart_path) .or. cli%check) then
+        call raise_error(err, EXIT_USAGE, '--verify checks one file and runs nothing: give it alone ' // &
+          '(raccord --verify FILE)')
+      end if
+      return
+    end if
     if (.not. allocated(cli%scene_path) .and. .not. allocated(cli%restart_path)) then
       call raise_error(err, EXIT_USAGE, 'no scene given; usage: raccord [options] SCENE (raccord --help)')
       return
@@ -161,6 +186,8 @@ contains
       '  --restart CHECKPOINT  continue the run that wrote CHECKPOINT, with its results' // nl // &
       '                  files (SCENE defaults to the deck it was written for; it must' // nl // &
       '                  resolve to the same scene)' // nl // &
+      '  --verify FILE   check a results (.h5, .h5.part) or checkpoint file: read back' // nl // &
+      '                  every dataset and its checksums; exit 0 intact, 2 damaged' // nl // &
       '  -q, --quiet     progress and info to the log file only' // nl // &
       '  -v, --verbose   debug messages' // nl // &
       '  -V, --version   print the version' // nl // &

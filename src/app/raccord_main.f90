@@ -38,7 +38,10 @@ program raccord_main
   use raccord_checkpoint, only: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path
   use raccord_run_control, only: run_control_t, start_run_control, set_run_limits, note_step, must_stop, &
     stop_reason, checkpoint_due, note_checkpoint
-  use raccord_files, only: make_directory, file_exists, delete_file
+  use raccord_files, only: make_directory, file_exists, delete_file, write_failure_reason
+  use raccord_run_lock, only: take_run_lock, drop_run_lock
+  use raccord_threads, only: wait_passively_if_oversubscribed
+  use raccord_verify, only: verify_file
   implicit none
 
   interface
@@ -71,6 +74,7 @@ program raccord_main
   integer(i8) :: first_step
 
   ! Phase 0: what the user asked for; stop signals ask for a checkpoint.
+  call wait_passively_if_oversubscribed()    ! may restart the program (raccord_threads)
   call start_run_control(control)
   call parse_command_line(cli, err)
   if (err%failed()) call finish(err)
@@ -82,6 +86,7 @@ program raccord_main
     write(output_unit, '(a)') 'raccord ' // raccord_version_string
     stop
   end if
+  if (allocated(cli%verify_path)) call verify_only()
   if (cli%quiet) call log_set_quiet(.true.)
   if (cli%verbose) call log_set_level(LEVEL_DEBUG)
   restart = allocated(cli%restart_path)
@@ -176,6 +181,7 @@ program raccord_main
   call report_summary(model, state, out, pairs, first_step)
   call log_debug('raccord', 'longest step ' // str(control%step_max, 3) // ' s, longest checkpoint write ' // &
     str(control%write_max, 3) // ' s (' // str(control%checkpoints) // ' checkpoints)')
+  call drop_run_lock()
   call log_close()
 
 contains
@@ -276,6 +282,7 @@ contains
     call log_info('raccord', 'stopped at step ' // str(state%step) // ' of ' // str(state%nsteps) // ', t = ' // &
       str(state%time) // ': ' // reason)
     call log_info('raccord', 'continue with: raccord --restart ' // checkpoint_name(stem))
+    call drop_run_lock()
     call log_close()
     ! Exit 5 is not an error: no ERROR STOP text or backtrace on stderr.
     ! Every file is closed and the HDF5 library released by now.
@@ -289,6 +296,10 @@ contains
     integer :: stat
     character(len=512) :: msg
     call make_directory(scene%run%output_dir, err)
+    if (err%failed()) call finish(err)
+    ! One run per output stem: a second run into the same folder and name
+    ! is refused before it touches the first one's files (log included).
+    call take_run_lock(stem, err)
     if (err%failed()) call finish(err)
     call log_open(stem // '.log', stat, msg, append=restart)
     if (stat /= 0) then
@@ -324,17 +335,37 @@ contains
     call finish(err)
   end subroutine guard_finite
 
+  !> raccord --verify FILE: check the file, print what was checked, exit
+  !> 0 (intact) or with the error (2: damaged).
+  subroutine verify_only()
+    character(len=:), allocatable :: report
+    call verify_file(cli%verify_path, report, err)
+    if (err%failed()) call finish(err)
+    write(output_unit, '(a)') report
+    stop
+  end subroutine verify_only
+
   !> Stop on an error: close any open result files as incomplete, log the
   !> message, exit with the error's code.
   subroutine finish(e)
     type(error_t), intent(in) :: e
     type(error_t) :: close_err
+    character(len=:), allocatable :: message, probe
+    logical :: takes_writes
     if (.not. e%failed()) return
-    call close_outputs(out, .false., e%message, close_err)
-    call log_error('raccord', e%message)
+    message = e%message
+    ! A write that failed during the run: say what the file system says
+    ! (a full disk) when a probe write into the output folder fails too.
+    if (e%code == EXIT_IO .and. allocated(scene%run%output_dir)) then
+      probe = write_failure_reason(scene%run%output_dir, takes_writes)
+      if (.not. takes_writes .and. index(message, probe) == 0) message = message // ' [' // probe // ']'
+    end if
+    call close_outputs(out, .false., message, close_err)
+    call log_error('raccord', message)
     if (e%code /= EXIT_USAGE .and. e%code /= EXIT_INPUT) &
       call log_error('raccord', 'run stopped; result files (if any) are marked incomplete')
     if (close_err%failed()) call log_error('raccord', close_err%message)
+    call drop_run_lock()
     call log_close()
     ! A result file that could not be closed (full disk) is still in the
     ! HDF5 library's list of open files, and the library's exit-time cleanup

@@ -14,7 +14,7 @@ module raccord_output
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
     results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
-    results_delete, results_flush, results_add_surface, results_write_surface_frame
+    results_delete, results_flush, results_add_surface, results_write_surface_frame, results_verify
   use raccord_history_file, only: history_file_t, history_open, history_write, history_close, history_bytes, &
     history_suspend, history_resume
   use raccord_contact_pair, only: contact_pair_t
@@ -22,6 +22,8 @@ module raccord_output
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file, file_size, truncate_file
+  use raccord_machine, only: physical_memory_bytes
+  use raccord_h5_superblock, only: h5_clear_write_flags
   use raccord_deck, only: write_scene
   implicit none
   private
@@ -84,13 +86,17 @@ contains
     type(error_t), intent(inout) :: err
     integer :: k
 
-    call prepare_outputs(out, scene, model, plan, pairs, stem)
+    call prepare_outputs(out, scene, model, plan, pairs, stem, err)
+    if (err%failed()) return
     call results_open(out%res, stem, err)
     if (err%failed()) return
     out%is_open = .true.
     call results_write_mesh(out%res, model%x, result_blocks(model), err)
     if (err%failed()) return
     do k = 1, size(model%supports)
+      ! Several &boundary groups may act on one node set (one component
+      ! each): the set is written once, under its name.
+      if (set_written_before(model, k)) cycle
       call results_write_node_set(out%res, model%supports(k)%set, model%supports(k)%nodes, err)
       if (err%failed()) return
     end do
@@ -106,15 +112,28 @@ contains
     out%clock_last = out%clock_start
   end subroutine open_outputs
 
+  !> True when a support before the k-th acts on the same node set.
+  logical function set_written_before(model, k)
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: k
+    integer :: j
+    set_written_before = .false.
+    do j = 1, k - 1
+      if (model%supports(j)%set == model%supports(k)%set) set_written_before = .true.
+    end do
+  end function set_written_before
+
   !> Settings and scratch of the outputs, for a new or a resumed run.
-  subroutine prepare_outputs(out, scene, model, plan, pairs, stem)
+  subroutine prepare_outputs(out, scene, model, plan, pairs, stem, err)
     type(output_t), intent(out) :: out
     type(scene_t), intent(in) :: scene
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
-    integer :: nrow_max, k, ns, nm
+    type(error_t), intent(inout) :: err
+    integer(i8) :: nrow_max, bytes, budget
+    integer :: k, ns, nm
     out%stem = stem
     out%stress = scene%output%stress
     out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
@@ -123,8 +142,22 @@ contains
     if (out%history_every <= 0) out%history_every = max(1_i8, plan%nsteps/1000_i8)
     call history_columns(model, pairs, out%columns)
     allocate(out%row(size(out%columns)))
-    nrow_max = int(plan%nsteps/out%history_every) + 3
-    allocate(out%table(size(out%columns), nrow_max))
+    ! The history rows are kept in memory for the HDF5 copy (and twice at a
+    ! checkpoint): their number is checked against the memory of the
+    ! machine before the table is allocated, never taken on trust.
+    nrow_max = plan%nsteps/out%history_every + 3
+    bytes = nrow_max*int(size(out%columns), i8)*8_i8
+    budget = physical_memory_bytes()/8_i8
+    if (nrow_max > int(huge(1), i8) .or. bytes > budget) then
+      call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &output history_every = ' // &
+        str(out%history_every) // ' over ' // str(plan%nsteps) // ' steps makes ' // str(nrow_max) // &
+        ' history rows of ' // str(size(out%columns)) // ' columns (' // str(real(bytes, wp)/1.0e9_wp, 3) // &
+        ' GB), more than the ' // str(real(budget, wp)/1.0e9_wp, 3) // ' GB (an eighth of this machine''s ' // &
+        'memory) a history may take: set history_every >= ' // &
+        str(max(1_i8, plan%nsteps/max(1_i8, budget/(8_i8*size(out%columns)) - 3) + 1)) // ' (or 0 for 1000 rows)')
+      return
+    end if
+    allocate(out%table(size(out%columns), int(nrow_max)))
     allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
     ns = 0
     nm = 0
@@ -224,8 +257,10 @@ contains
     character(len=256) :: msg
     integer :: k, n, ios
     integer(i8) :: bytes
+    logical :: cleared, ok
 
-    call prepare_outputs(out, scene, model, plan, pairs, stem)
+    call prepare_outputs(out, scene, model, plan, pairs, stem, err)
+    if (err%failed()) return
     if (mark%nrow > size(out%table, 2) .or. size(mark%table, 1) /= size(out%columns)) then
       call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' does not fit this scene''s history ' // &
         'table; run the scene afresh without --restart')
@@ -264,7 +299,14 @@ contains
         ncomps = [ncomps, 4]
       end if
     end if
+    ! A run killed while writing leaves the file marked open for writing
+    ! (raccord_h5_superblock); this run holds the stem's lock, so it is not.
+    call h5_clear_write_flags(stem // '.h5.part', cleared, ok)
+    if (cleared) call log_info('restart', stem // '.h5.part was left marked as open for writing (the run ' // &
+      'was killed): mark cleared')
     call results_resume(out%res, stem, model%nnode, result_blocks(model), fields, ncomps, mark%frames_written, err)
+    if (err%failed()) return
+    call results_verify(out%res, err)     ! checksums of what is continued
     if (err%failed()) return
     out%is_open = .true.
     call add_contact_surfaces(out, pairs, err)

@@ -108,6 +108,16 @@ contains
             model%bodies(bs)%name // '''; self-contact is not supported. Use surfaces of two bodies.')
           return
         end if
+        ! Multipliers act through 1/mass of the free dofs: with every dof of
+        ! both surfaces prescribed they cannot act at all (the solve then
+        ! 'failed to converge' with a residual of 0).
+        if (all(model%minv_dof(:, pair%slave%node) == 0.0_wp) .and. &
+            all(model%minv_dof(:, pair%master%node) == 0.0_wp)) then
+          call raise_error(err, EXIT_INPUT, where // ': every node of both surfaces has both components ' // &
+            'prescribed by &boundary groups, so contact can move neither body: free one body (or some ' // &
+            'components), or remove the &contact_pair')
+          return
+        end if
         pair%name = trim(spec%slave) // '/' // trim(spec%master)
         pair%method = spec%method
         pair%multiplier = spec%multiplier
@@ -203,7 +213,15 @@ contains
       call log_warn('contact', 'pair ' // pair%name // ': multipliers not converged at step ' // &
         str(state%step) // ' (t = ' // str(state%time) // ') after ' // str(pair%work%iterations) // &
         ' iterations; residual ' // str(pair%residual, 3) // ', ' // str(m) // ' constraints')
-      if (pair%failed_streak > MAX_FAILED_STEPS) then
+      if (pair%failed_streak > MAX_FAILED_STEPS .and. pair%work%singular) then
+        ! A singular contact system: constraints whose nodes cannot move
+        ! (their motion prescribed on both sides), not a hard solve.
+        call raise_error(err, EXIT_NUMERIC, 'contact pair ' // pair%name // ': the contact system is singular ' // &
+          'for ' // str(pair%failed_streak) // ' steps in a row (t = ' // str(state%time) // '): the surfaces ' // &
+          'meet where the motion of both sides is prescribed (&boundary groups), so contact cannot act there; ' // &
+          'free one side there, or remove the &contact_pair.')
+        return
+      else if (pair%failed_streak > MAX_FAILED_STEPS) then
         call raise_error(err, EXIT_NUMERIC, 'contact pair ' // pair%name // ': the multiplier solve failed ' // &
           'to converge for ' // str(pair%failed_streak) // ' steps in a row (last residual ' // &
           str(pair%residual, 3) // ' at t = ' // str(state%time) // '). Reduce the time step (&time safety), ' // &

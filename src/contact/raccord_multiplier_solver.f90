@@ -51,6 +51,7 @@ module raccord_multiplier_solver
     logical :: converged = .true.
     real(wp) :: residual = 0.0_wp
     integer :: dropped = 0                        !< constraints with no movable node
+    logical :: singular = .false.                 !< the last solve met a singular system
   end type solver_work_t
 
   public :: solve_multipliers
@@ -87,6 +88,7 @@ contains
     w%converged = .true.
     w%residual = 0.0_wp
     w%dropped = 0
+    w%singular = .false.
     if (m == 0) return
     friction = mu > 0.0_wp
     nu = merge(4, 2, friction)
@@ -120,6 +122,7 @@ contains
         ! A singular system means constraints that cannot move: report as
         ! not converged with the multipliers of the previous iterate.
         w%converged = .false.
+        w%singular = .true.
         exit
       end if
       do j = 1, m

@@ -7,19 +7,23 @@
 !> message needs to say how to fix it.
 module raccord_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_char, c_associated, &
-    c_f_pointer, c_long
+    c_f_pointer, c_long, c_size_t, c_int8_t
   use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_IO
+  use raccord_crc32, only: crc32_t, crc_add, crc_value
   implicit none
   private
 
   public :: rename_file, make_directory, file_exists, delete_file, file_size, truncate_file
+  public :: write_failure_reason, crc_of_file
 
   !> access(2) mode "does the file exist".
   integer(c_int), parameter :: F_OK = 0_c_int
   !> Permissions for new directories; the process umask still applies,
   !> as for `mkdir -p`.
   integer(c_int), parameter :: DIR_MODE = int(o'777', c_int)
+  !> access(2) mode "may this process write there".
+  integer(c_int), parameter :: W_OK = 2_c_int
   !> Longest C error text copied from strerror.
   integer, parameter :: MAX_ERRTEXT = 256
 
@@ -57,6 +61,40 @@ module raccord_files
       integer(c_long), value :: length
       integer(c_int) :: rc
     end function c_truncate
+
+    function c_fopen(path, mode) bind(C, name='fopen') result(fp)
+      import :: c_char, c_ptr
+      character(kind=c_char), intent(in) :: path(*), mode(*)
+      type(c_ptr) :: fp
+    end function c_fopen
+
+    function c_fwrite(buf, size, n, fp) bind(C, name='fwrite') result(written)
+      import :: c_char, c_ptr, c_size_t
+      character(kind=c_char), intent(in) :: buf(*)
+      integer(c_size_t), value :: size, n
+      type(c_ptr), value :: fp
+      integer(c_size_t) :: written
+    end function c_fwrite
+
+    function c_fread(buf, size, n, fp) bind(C, name='fread') result(got)
+      import :: c_ptr, c_size_t, c_int8_t
+      integer(c_int8_t), intent(out) :: buf(*)
+      integer(c_size_t), value :: size, n
+      type(c_ptr), value :: fp
+      integer(c_size_t) :: got
+    end function c_fread
+
+    function c_fflush(fp) bind(C, name='fflush') result(rc)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: fp
+      integer(c_int) :: rc
+    end function c_fflush
+
+    function c_fclose(fp) bind(C, name='fclose') result(rc)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: fp
+      integer(c_int) :: rc
+    end function c_fclose
 
     function c_strerror(errnum) bind(C, name='strerror') result(text)
       import :: c_int, c_ptr
@@ -141,6 +179,85 @@ contains
         // ' bytes: ' // last_error_text())
     end if
   end subroutine truncate_file
+
+  !> Why a file could not be written in a folder, found out after the fact
+  !> (HDF5 does not pass the system's reason on): the folder is missing, or
+  !> not writable, or a probe of 64 KiB written and flushed there fails with
+  !> the system's own words (a full disk: "No space left on device").
+  function write_failure_reason(folder, takes_writes) result(reason)
+    character(len=*), intent(in) :: folder
+    logical, intent(out), optional :: takes_writes   !< the probe write went through
+    character(len=:), allocatable :: reason, dir, probe
+    character(kind=c_char, len=1024) :: block
+    type(c_ptr) :: fp
+    integer(c_int) :: rc
+    integer :: k
+    dir = trim(folder)
+    if (len(dir) == 0) dir = '.'
+    if (present(takes_writes)) takes_writes = .false.
+    if (.not. is_directory(dir)) then
+      reason = 'the folder "' // dir // '" does not exist (or is not a folder)'
+      return
+    end if
+    if (c_access(c_path(dir), W_OK) /= 0) then
+      reason = 'the folder "' // dir // '" is not writable: ' // last_error_text()
+      return
+    end if
+    ! C stdio, not a Fortran unit: gfortran's FLUSH and CLOSE do not report
+    ! a write the disk refused, fflush(3) does, with errno.
+    probe = dir // '/.raccord-write-probe'
+    reason = ''
+    fp = c_fopen(c_path(probe), c_path('w'))
+    if (.not. c_associated(fp)) then
+      reason = 'cannot create a file in "' // dir // '": ' // last_error_text()
+      return
+    end if
+    block = repeat('0', len(block))
+    do k = 1, 64
+      if (c_fwrite(block, 1_c_size_t, int(len(block), c_size_t), fp) /= int(len(block), c_size_t)) exit
+    end do
+    if (k <= 64 .or. c_fflush(fp) /= 0) reason = 'writing in "' // dir // '" fails: ' // last_error_text() // &
+      ' (full disk or quota?): free some space or write elsewhere (--output)'
+    rc = c_fclose(fp)
+    rc = c_unlink(c_path(probe))
+    if (len(reason) == 0) then
+      reason = 'the folder "' // dir // '" takes a 64 KiB test file, so the failure may have passed (was ' // &
+        'the disk nearly full?)'
+      if (present(takes_writes)) takes_writes = .true.
+    end if
+  end function write_failure_reason
+
+  !> CRC-32 of the first `bytes` bytes of a file, or -1 when it cannot be
+  !> read or is shorter. Read through C stdio: the file may be open on a
+  !> Fortran unit of this run (a running history), which a second Fortran
+  !> unit may not open.
+  function crc_of_file(path, bytes) result(crc)
+    character(len=*), intent(in) :: path
+    integer(i8), intent(in) :: bytes
+    integer(i8) :: crc
+    integer, parameter :: block = 65536
+    integer(c_int8_t), allocatable :: buf(:)
+    type(crc32_t) :: c
+    type(c_ptr) :: fp
+    integer(i8) :: done, n
+    integer(c_size_t) :: got
+    integer(c_int) :: rc
+    crc = -1
+    if (bytes < 0) return
+    fp = c_fopen(c_path(path), c_path('rb'))
+    if (.not. c_associated(fp)) return
+    allocate(buf(block))
+    done = 0
+    do while (done < bytes)
+      n = min(int(block, i8), bytes - done)
+      got = c_fread(buf, 1_c_size_t, int(n, c_size_t), fp)
+      if (got /= int(n, c_size_t)) exit
+      call crc_add(c, buf(1:n))
+      done = done + n
+    end do
+    rc = c_fclose(fp)
+    if (done == bytes) crc = crc_value(c)
+  end function crc_of_file
 
   ! --- private -----------------------------------------------------------
 

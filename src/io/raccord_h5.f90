@@ -12,15 +12,17 @@ module raccord_h5
     h5dcreate_f, h5dopen_f, h5dwrite_f, h5dclose_f, h5dset_extent_f, h5dget_space_f, &
     h5acreate_f, h5awrite_f, h5aclose_f, &
     h5tcopy_f, h5tset_size_f, h5tset_strpad_f, h5tclose_f, &
-    h5pcreate_f, h5pset_chunk_f, h5pclose_f, &
+    h5pcreate_f, h5pset_chunk_f, h5pclose_f, h5pset_fletcher32_f, h5pset_libver_bounds_f, h5fcreate_f, &
     H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_NATIVE_CHARACTER, H5T_STR_NULLPAD_F, &
-    H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, H5P_DATASET_CREATE_F
+    H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, H5P_DATASET_CREATE_F, H5P_FILE_ACCESS_F, &
+    H5F_ACC_TRUNC_F, H5F_LIBVER_V110_F, H5F_LIBVER_LATEST_F, H5P_DEFAULT_F
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_IO
+  use raccord_crc32, only: crc32_t, crc_add, crc_value, crc_hex
   implicit none
   private
 
-  public :: h5_acquire, h5_release
+  public :: h5_acquire, h5_release, h5_create_file
   public :: h5_ensure_groups, h5_link_exists, h5_delete_link
   public :: h5_write_real, h5_write_int, h5_write_text
   public :: h5_attr_real, h5_attr_int, h5_attr_text, h5_attr_text_list
@@ -74,6 +76,28 @@ contains
     call h5close_f(hdferr)
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close the HDF5 library (h5close_f failed)')
   end subroutine h5_release
+
+  !> Create (truncate) a file whose metadata carries checksums: the file
+  !> format of HDF5 1.10 (superblock v3, object headers v2, and chunk
+  !> indexes with checksums; the 1.8 format still indexes chunks with
+  !> version-1 B-trees, which have none), which HDF5 checks on every read.
+  !> Readers need HDF5 1.10 or later. With the Fletcher32 filter on the datasets
+  !> (create_dataset, h5_create_growing), a damaged byte anywhere in what a
+  !> reader uses is found (issue #18) rather than read as a value.
+  subroutine h5_create_file(path, file, hdferr)
+    character(len=*), intent(in) :: path
+    integer(hid_t), intent(out) :: file
+    integer, intent(out) :: hdferr
+    integer(hid_t) :: fapl
+    integer :: cerr
+    file = -1
+    call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, hdferr)
+    if (hdferr /= 0) return
+    call h5pset_libver_bounds_f(fapl, H5F_LIBVER_V110_F, H5F_LIBVER_LATEST_F, hdferr)
+    if (hdferr == 0) call h5fcreate_f(path, H5F_ACC_TRUNC_F, file, hdferr, H5P_DEFAULT_F, fapl)
+    call h5pclose_f(fapl, cerr)
+    if (hdferr == 0) hdferr = cerr
+  end subroutine h5_create_file
 
   !> True when every link of an absolute or relative path exists
   !> (h5lexists_f alone fails when an intermediate group is missing).
@@ -200,6 +224,7 @@ contains
     integer(hid_t) :: dset, space, stype
     integer(hsize_t), parameter :: scalar_dims(1) = [1_hsize_t]
     integer :: hdferr
+    type(crc32_t) :: crc
     call h5_ensure_groups(loc, path, where, err)
     if (err%failed()) return
     call string_type(len(text), stype, hdferr)
@@ -213,6 +238,10 @@ contains
       if (hdferr == 0) then
         call h5dwrite_f(dset, stype, padded(text), scalar_dims, hdferr)
         if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot write text "' // path // '" in ' // where)
+        ! A scalar text cannot take the Fletcher32 filter (it needs
+        ! chunks): its CRC-32 goes beside it, checked by raccord_h5_verify.
+        call crc_add(crc, padded(text))
+        call h5_attr_text(dset, 'crc32', crc_hex(crc_value(crc)), where, err)
         call h5dclose_f(dset, hdferr)
       else
         call raise_error(err, EXIT_IO, 'cannot create text dataset "' // path // '" in ' // where &
@@ -249,6 +278,8 @@ contains
       call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, hdferr)
       if (hdferr /= 0) exit steps
       call h5pset_chunk_f(dcpl, 1, chunk, hdferr)
+      if (hdferr /= 0) exit steps
+      call h5pset_fletcher32_f(dcpl, hdferr)
       if (hdferr /= 0) exit steps
       call h5dcreate_f(loc, path, dtype, space, dset, hdferr, dcpl_id=dcpl)
       if (hdferr /= 0) exit steps
@@ -413,15 +444,19 @@ contains
 
   ! --- private -----------------------------------------------------------
 
-  !> Create the groups above `path` and an empty contiguous dataset there.
+  !> Create the groups above `path` and an empty dataset there: one chunk
+  !> with the Fletcher32 checksum filter (an empty or very large dataset
+  !> stays contiguous, without it: a chunk holds at most 4 GB).
   subroutine create_dataset(loc, path, dtype, dims, dset, where, err)
     integer(hid_t), intent(in) :: loc, dtype
     character(len=*), intent(in) :: path, where
     integer(hsize_t), intent(in) :: dims(:)
     integer(hid_t), intent(out) :: dset
     type(error_t), intent(inout) :: err
-    integer(hid_t) :: space
-    integer :: hdferr
+    integer(hsize_t), parameter :: max_chunk_values = 2_hsize_t**28
+    integer(hid_t) :: space, dcpl
+    integer :: hdferr, cerr
+    logical :: checked
     dset = -1
     call h5_ensure_groups(loc, path, where, err)
     if (err%failed()) return
@@ -432,9 +467,18 @@ contains
     end if
     ! The Fortran API takes the Fortran shape and stores it reversed
     ! (slowest first), which is the layout h5dump and h5py show.
+    checked = all(dims > 0) .and. product(dims) <= max_chunk_values
     call h5screate_simple_f(size(dims), dims, space, hdferr)
     if (hdferr == 0) then
-      call h5dcreate_f(loc, path, dtype, space, dset, hdferr)
+      if (checked) then
+        call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, hdferr)
+        if (hdferr == 0) call h5pset_chunk_f(dcpl, size(dims), dims, hdferr)
+        if (hdferr == 0) call h5pset_fletcher32_f(dcpl, hdferr)
+        if (hdferr == 0) call h5dcreate_f(loc, path, dtype, space, dset, hdferr, dcpl_id=dcpl)
+        call h5pclose_f(dcpl, cerr)
+      else
+        call h5dcreate_f(loc, path, dtype, space, dset, hdferr)
+      end if
       if (hdferr /= 0) dset = -1
       call h5sclose_f(space, hdferr)
     end if

@@ -22,13 +22,14 @@
 !> stays stem.h5.part); the restarted run calls results_resume in place of
 !> results_open and results_write_mesh, and goes on with the next frame.
 module raccord_results
-  use hdf5, only: hid_t, hsize_t, h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5gcreate_f, h5gclose_f, &
-    h5dopen_f, h5dclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F
+  use hdf5, only: hid_t, hsize_t, h5fopen_f, h5fclose_f, h5fflush_f, h5gcreate_f, h5gclose_f, &
+    h5dopen_f, h5dclose_f, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, prefix_error, EXIT_IO, EXIT_INPUT, EXIT_INTERNAL
   use raccord_strings, only: str
-  use raccord_files, only: make_directory, rename_file, delete_file, file_exists
-  use raccord_h5, only: h5_acquire, h5_release, h5_delete_link, h5_link_exists, &
+  use raccord_files, only: make_directory, rename_file, delete_file, file_exists, write_failure_reason
+  use raccord_h5_verify, only: h5_verify_tree
+  use raccord_h5, only: h5_acquire, h5_release, h5_create_file, h5_delete_link, h5_link_exists, &
     h5_write_real, h5_write_int, h5_write_text, h5_attr_real, h5_attr_int, h5_attr_text, &
     h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
   use raccord_h5_read, only: h5_read_real, h5_read_attr_text, h5_dims
@@ -38,7 +39,7 @@ module raccord_results
   implicit none
   private
 
-  public :: results_open, results_write_mesh, results_write_node_set
+  public :: results_open, results_write_mesh, results_write_node_set, results_verify
   public :: results_begin_frame, results_write_nodal, results_end_frame
   public :: results_write_array, results_write_table, results_set_text, results_close
   public :: results_suspend, results_resume, results_has, results_delete, results_flush
@@ -200,10 +201,10 @@ contains
     if (err%failed()) return
     call h5_acquire(err)
     if (err%failed()) return
-    call h5fcreate_f(res%part_name, H5F_ACC_TRUNC_F, res%file, hdferr)
+    call h5_create_file(res%part_name, res%file, hdferr)
     if (hdferr /= 0) then
-      call raise_error(err, EXIT_IO, 'cannot create ' // res%where &
-        // '; check that the folder exists and is writable')
+      call raise_error(err, EXIT_IO, 'cannot create ' // res%where // ': ' // &
+        write_failure_reason(folder_of(res%stem)))
       call h5_release(err)
       return
     end if
@@ -441,6 +442,17 @@ contains
     if (.not. usable(res, 'results_flush', err)) return
     call flush_file(res, 'the results', err)
   end subroutine results_flush
+
+  !> Read back everything in the open file (raccord_h5_verify): a restart
+  !> checks the results it continues; a damaged one is refused (EXIT_INPUT).
+  subroutine results_verify(res, err)
+    type(results_t), intent(in) :: res
+    type(error_t), intent(inout) :: err
+    integer :: ndata
+    if (.not. usable(res, 'results_verify', err)) return
+    ndata = 0
+    call h5_verify_tree(res%file, '/', res%where, ndata, err)
+  end subroutine results_verify
 
   !> True when an object exists at `path` in the open file.
   logical function results_has(res, path)

@@ -11,7 +11,7 @@
 !> Reference: Abaqus Keywords Reference Guide (input syntax rules) and the
 !> CalculiX CrunchiX user's manual, section 8 (input deck format).
 module raccord_abaqus_reader
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info
   use raccord_strings, only: str, lower
@@ -40,6 +40,7 @@ module raccord_abaqus_reader
     integer :: set = 0                         !< set filled by the block (NSET=, ELSET=), 0 if none
     integer :: surf = 0
     logical :: generate = .false.
+    integer(i8) :: bytes_read = 0              !< sizes of the files opened so far (bounds GENERATE ranges)
     character(len=:), allocatable :: ignored   !< keywords skipped, for one log line
     character(len=:), allocatable :: reduced   !< reduced-integration types met
   end type abaqus_state_t
@@ -84,6 +85,7 @@ contains
 
     call open_text_file(tf, path, err)
     if (err%failed()) return
+    st%bytes_read = st%bytes_read + max(0_i8, tf%bytes)
     call add_file(d, path, ifile)
     have_pending = .false.
     pending_no = 0
@@ -167,6 +169,15 @@ contains
     kw = lower(trim(adjustl(sl%text(2:l(1)))))
     at = loc_text(d, sl)
 
+    ! Parts and instances (Abaqus/CAE's default) place each part by its
+    ! instance's translation and rotation, and number each part from 1;
+    ! read flat, the geometry would be silently wrong. Refused.
+    if (kw == 'part' .or. kw == 'instance' .or. kw == 'assembly') then
+      call raise_error(err, EXIT_INPUT, at // ': *' // sl%text(2:l(1)) // ': parts, instances and ' // &
+        'assemblies are not read (instance transformations would be lost): write a flat input file ' // &
+        '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
+      return
+    end if
     if (kw == 'include') then
       ! textual inclusion: the current block goes on into the included file,
       ! which may hold just its data lines
@@ -333,6 +344,8 @@ contains
     integer, intent(in) :: f(:), l(:), nf
     type(error_t), intent(inout) :: err
     integer :: first, last, step, id
+    integer(i8) :: count, most
+    integer(i8), parameter :: min_range = 10000000_i8
     if (nf < 2 .or. nf > 3) then
       call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': a GENERATE line is "first, last[, step]", found ' // &
         str(nf) // ' fields')
@@ -346,6 +359,24 @@ contains
     if (step <= 0 .or. last < first) then
       call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': GENERATE needs first <= last and step > 0, found ' // &
         str(first) // ', ' // str(last) // ', ' // str(step))
+      return
+    end if
+    ! Every generated id must be a node or element defined in the files,
+    ! each on a line of its own: a range longer than the items read so far
+    ! and the bytes of the files can hold is a damaged count, refused before
+    ! it is expanded (a range of two billion once ran out of memory). Files
+    ! included later may hold the items: ranges up to min_range ids (some
+    ! hundred MB at most) are always expanded.
+    count = (int(last, i8) - int(first, i8))/int(step, i8) + 1_i8
+    if (st%block == BLK_NSET) then
+      most = max(int(d%nnode, i8), st%bytes_read/2_i8, min_range)
+    else
+      most = max(int(d%nelem, i8), st%bytes_read/2_i8, min_range)
+    end if
+    if (count > most) then
+      call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': GENERATE ' // str(first) // ', ' // str(last) // &
+        ', ' // str(step) // ' makes ' // str(count) // ' ids, more than the ' // str(most) // &
+        ' a range may hold here (the larger of the items and lines read so far and 10^7): check the range')
       return
     end if
     do id = first, last, step

@@ -18,7 +18,7 @@ module raccord_gmsh_reader
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8
   use raccord_int_map, only: int_map_t, map_init, map_insert, pair_key
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, here, &
-    split_fields, parse_int, parse_real
+    split_fields, parse_int, parse_real, check_count
   use raccord_mesh_draft, only: mesh_draft_t, add_file, add_node, add_element, add_group, add_member, &
     add_draft_surface, add_edge_by_nodes
   implicit none
@@ -280,6 +280,7 @@ contains
       if (err%failed()) return
       call get_int(tf, line, f, l, 3, 'parametric flag', parametric, err)
       call get_int(tf, line, f, l, 4, 'number of nodes in block', n, err)
+      call check_count(tf, n, 2, 'the number of nodes in block ' // str(b), err)
       if (err%failed()) return
       allocate(tags(n), tag_line(n))
       do k = 1, n
@@ -359,6 +360,7 @@ contains
       call get_int(tf, line, f, l, 2, 'entity tag', etag, err)
       call get_int(tf, line, f, l, 3, 'element type', gtype, err)
       call get_int(tf, line, f, l, 4, 'number of elements in block', n, err)
+      call check_count(tf, n, 1, 'the number of elements in block ' // str(b), err)
       if (err%failed()) return
       nn = gmsh_nodes(gtype)
       if (nn == 0) then
@@ -624,7 +626,7 @@ contains
     if (err%failed()) return
     call get_int(tf, line, f, l, 1, what, n, err)
     if (err%failed()) return
-    if (n < 0) call raise_error(err, EXIT_INPUT, here(tf) // ': ' // what // ' is negative (' // str(n) // ')')
+    call check_count(tf, n, 1, what, err)
   end subroutine read_count
 
   !> The line after a section's data must close it.

@@ -13,7 +13,7 @@ module raccord_mesh_check
   use raccord_strings, only: str, lower
   use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key
   use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, &
-    nodes_per_element, side_nodes
+    nodes_per_element, side_nodes, element_name
   use raccord_mesh_draft, only: mesh_draft_t, where_text
   use raccord_mesh_quality, only: check_element_shape, SHAPE_OK, SHAPE_CLOCKWISE, DEGENERATE_RTOL
   implicit none
@@ -43,6 +43,10 @@ contains
     call build_elements(d, node_map, new_node, mesh, err)
     if (err%failed()) return
     call check_shapes(d, mesh, err)
+    if (err%failed()) return
+    call check_shared_sides(d, mesh, err)
+    if (err%failed()) return
+    call check_hanging_nodes(d, mesh, err)
     if (err%failed()) return
     call build_elem_sets(d, elem_map, mesh, err)
     if (err%failed()) return
@@ -173,6 +177,140 @@ contains
       return
     end do
   end subroutine check_shapes
+
+  !> Two elements that share a side (the same two corners) must share all
+  !> of it: both without a mid-side node (Q4-Q4) or both with the same one
+  !> (Q8-Q8). A Q8 beside a Q4 leaves its mid-side node hanging, free to
+  !> open a gap the Q4 does not follow, and was accepted without a word.
+  subroutine check_shared_sides(d, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(mesh_t), intent(in) :: mesh
+    type(error_t), intent(inout) :: err
+    type(int_map_t) :: side_map
+    integer :: e, s, prev, other, mine, theirs, loc(3)
+    character(len=:), allocatable :: what
+    call map_init(side_map, 4*mesh%nelem)
+    do e = 1, mesh%nelem
+      do s = 1, 4
+        loc = side_nodes(mesh%etype(e), s)
+        call map_insert(side_map, pair_key(mesh%conn(loc(1), e), mesh%conn(loc(2), e)), 4*(e - 1) + s, prev)
+        if (prev == 0) cycle
+        other = (prev - 1)/4 + 1
+        mine = mid_of(e, s)
+        theirs = mid_of(other, prev - 4*(other - 1))
+        if (mine == theirs) cycle
+        if (mine == 0 .or. theirs == 0) then
+          what = 'a ' // element_name(mesh%etype(other)) // ' and a ' // element_name(mesh%etype(e)) // &
+            ' share a side, whose mid-side node ' // str(mesh%node_id(max(mine, theirs))) // ' hangs: ' // &
+            'use one element order in each body (all Q4 or all Q8; Gmsh: one Mesh.ElementOrder)'
+        else
+          what = 'their common side has two different mid-side nodes, ' // str(mesh%node_id(theirs)) // &
+            ' and ' // str(mesh%node_id(mine)) // ': merge them (the mesh is not conforming)'
+        end if
+        call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(e), d%elem_line(e)) // ': elements ' // &
+          str(mesh%elem_id(other)) // ' and ' // str(mesh%elem_id(e)) // ' (side ' // &
+          str(mesh%node_id(mesh%conn(loc(1), e))) // '-' // str(mesh%node_id(mesh%conn(loc(2), e))) // '): ' // &
+          what)
+        return
+      end do
+    end do
+  contains
+    !> Mid-side node of side k of element el, 0 for a Q4.
+    integer function mid_of(el, k)
+      integer, intent(in) :: el, k
+      integer :: l(3)
+      l = side_nodes(mesh%etype(el), k)
+      mid_of = 0
+      if (mesh%etype(el) == ELEM_Q8) mid_of = mesh%conn(l(3), el)
+    end function mid_of
+  end subroutine check_shared_sides
+
+  !> No hanging node: a side a-b of one element that another element's
+  !> node m splits into two sides a-m and m-b of its neighbours (a 2:1
+  !> refinement, or a Q8 whose mid-side node is the corner of finer
+  !> elements) leaves m free to open a gap. Such a side and its two halves
+  !> are each used by one element only; m is the side's mid-side node or
+  !> lies on the chord a-b (within 1e-6 of its length).
+  subroutine check_hanging_nodes(d, mesh, err)
+    type(mesh_draft_t), intent(in) :: d
+    type(mesh_t), intent(in) :: mesh
+    type(error_t), intent(inout) :: err
+    type(int_map_t) :: side_map
+    integer, allocatable :: sa(:), sb(:), se(:), smid(:), uses(:), head(:), nxt(:), to(:)
+    integer :: e, s, k, k2, j, nside, nlink, prev, a, b, m, loc(3)
+    call map_init(side_map, 4*mesh%nelem)
+    allocate(sa(4*mesh%nelem), sb(4*mesh%nelem), se(4*mesh%nelem), smid(4*mesh%nelem), uses(4*mesh%nelem))
+    nside = 0
+    do e = 1, mesh%nelem
+      do s = 1, 4
+        loc = side_nodes(mesh%etype(e), s)
+        k = map_get(side_map, pair_key(mesh%conn(loc(1), e), mesh%conn(loc(2), e)))
+        if (k > 0) then
+          uses(k) = uses(k) + 1
+          cycle
+        end if
+        nside = nside + 1
+        sa(nside) = mesh%conn(loc(1), e)
+        sb(nside) = mesh%conn(loc(2), e)
+        se(nside) = e
+        smid(nside) = 0
+        if (mesh%etype(e) == ELEM_Q8) smid(nside) = mesh%conn(loc(3), e)
+        uses(nside) = 1
+        call map_insert(side_map, pair_key(sa(nside), sb(nside)), nside, prev)
+      end do
+    end do
+    ! the sides used once, listed from each of their two ends
+    allocate(head(mesh%nnode), nxt(2*nside), to(2*nside))
+    head = 0
+    nlink = 0
+    do k = 1, nside
+      if (uses(k) /= 1) cycle
+      call link(sa(k), sb(k))
+      call link(sb(k), sa(k))
+    end do
+    do k = 1, nside
+      if (uses(k) /= 1) cycle
+      a = sa(k)
+      b = sb(k)
+      j = head(a)
+      do while (j > 0)
+        m = to(j)
+        j = nxt(j)
+        if (m == b) cycle
+        k2 = map_get(side_map, pair_key(m, b))
+        if (k2 == 0) cycle
+        if (uses(k2) /= 1) cycle
+        if (m /= smid(k) .and. .not. on_chord(mesh%x(:, a), mesh%x(:, b), mesh%x(:, m))) cycle
+        call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(se(k)), d%elem_line(se(k))) // ': node ' // &
+          str(mesh%node_id(m)) // ' hangs on the side ' // str(mesh%node_id(a)) // '-' // str(mesh%node_id(b)) // &
+          ' of element ' // str(mesh%elem_id(se(k))) // ': it is a corner of the neighbouring elements but ' // &
+          'not of this one, so the mesh can open there; remesh without hanging nodes (conforming refinement)')
+        return
+      end do
+    end do
+  contains
+    subroutine link(from, there)
+      integer, intent(in) :: from, there
+      nlink = nlink + 1
+      to(nlink) = there
+      nxt(nlink) = head(from)
+      head(from) = nlink
+    end subroutine link
+    !> p strictly inside the segment p1-p2, off its line by at most 1e-6 of its length.
+    pure logical function on_chord(p1, p2, p)
+      real(wp), intent(in) :: p1(2), p2(2), p(2)
+      real(wp) :: t, len2, dist2, v(2), w(2)
+      v = p2 - p1
+      w = p - p1
+      len2 = v(1)**2 + v(2)**2
+      on_chord = .false.
+      if (len2 <= 0.0_wp) return
+      t = (w(1)*v(1) + w(2)*v(2))/len2
+      if (t <= 1.0e-6_wp .or. t >= 1.0_wp - 1.0e-6_wp) return
+      dist2 = (w(1) - t*v(1))**2 + (w(2) - t*v(2))**2
+      on_chord = dist2 <= 1.0e-12_wp*len2
+    end function on_chord
+  end subroutine check_hanging_nodes
 
   subroutine build_elem_sets(d, elem_map, mesh, err)
     type(mesh_draft_t), intent(in) :: d

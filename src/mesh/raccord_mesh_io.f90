@@ -79,10 +79,32 @@ contains
       return
     end if
     if (factor /= 1.0_wp) mesh%x = factor*mesh%x
+    call check_extent(path, factor, mesh, err)
+    if (err%failed()) return
 
     call log_info('read_mesh', path // ': ' // str(mesh%nnode) // ' nodes, ' // str(mesh%nelem) // &
       ' elements (' // str(count(mesh%etype == ELEM_Q4)) // ' Q4, ' // str(count(mesh%etype == ELEM_Q8)) // &
       ' Q8), ' // str(size(mesh%esets)) // ' element sets, ' // str(size(mesh%nsets)) // ' node sets, ' // &
       str(size(mesh%surfaces)) // ' surfaces')
   end subroutine read_mesh
+
+  !> The scaled mesh must keep its areas, masses and stiffnesses finite and
+  !> non-zero in double precision: a size across between 1e-100 and 1e100
+  !> (a scale of 1e200 made every area infinite, and the run then reported
+  !> a model without stiffness).
+  subroutine check_extent(path, factor, mesh, err)
+    character(*), intent(in) :: path
+    real(wp), intent(in) :: factor
+    type(mesh_t), intent(in) :: mesh
+    type(error_t), intent(inout) :: err
+    real(wp), parameter :: smallest = 1.0e-100_wp, largest = 1.0e100_wp
+    real(wp) :: across
+    if (mesh%nnode == 0) return
+    across = max(maxval(mesh%x(1, :)) - minval(mesh%x(1, :)), maxval(mesh%x(2, :)) - minval(mesh%x(2, :)))
+    if (across >= smallest .and. across <= largest) return
+    call raise_error(err, EXIT_INPUT, 'mesh ' // path // ' scaled by &mesh scale = ' // str(factor) // &
+      ' is ' // str(across) // ' across, outside 1e-100 to 1e100 where areas and stiffnesses stay finite ' // &
+      'in double precision: give the factor from mesh units to deck units (e.g. scale = 1.0e3 for a ' // &
+      'mesh in m and a deck in mm)')
+  end subroutine check_extent
 end module raccord_mesh_io

@@ -4,20 +4,25 @@
 !> Lines may be of any length (Abaqus continuation, long Gmsh entity lines)
 !> and may end in CR-LF (files written on Windows).
 module raccord_text_reader
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
   implicit none
   private
 
-  public :: open_text_file, close_text_file, read_line, here
+  public :: open_text_file, close_text_file, read_line, here, check_count
   public :: split_fields, parse_int, parse_real
+
+  !> Longest line read (Gmsh and Abaqus lines are far shorter).
+  integer, parameter :: MAX_LINE = 1000000
 
   !> An open text file and the number of the last line read.
   type, public :: text_file_t
     character(len=:), allocatable :: path
     integer :: unit = -1
     integer :: line_no = 0
+    integer(i8) :: bytes = -1        !< size of the file when opened (-1: unknown)
+    logical :: at_end = .false.      !< end of file reached: further reads return eof
   end type text_file_t
 
 contains
@@ -43,8 +48,34 @@ contains
     if (ios /= 0) then
       tf%unit = -1
       call raise_error(err, EXIT_INPUT, 'cannot open mesh file "' // path // '": ' // trim(msg))
+      return
     end if
+    inquire(unit=tf%unit, size=tf%bytes)
   end subroutine open_text_file
+
+  !> A count read from the file (items of `lines_each` lines each) must be
+  !> >= 0 and fit in what the file can hold: every line takes at least two
+  !> bytes (a character and its end of line). Checked before anything is
+  !> allocated or looped over by that count.
+  subroutine check_count(tf, n, lines_each, what, err)
+    type(text_file_t), intent(in) :: tf
+    integer, intent(in) :: n, lines_each
+    character(len=*), intent(in) :: what
+    type(error_t), intent(inout) :: err
+    integer(i8) :: most
+    if (n < 0) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': ' // what // ' is negative (' // str(n) // &
+        '): the file is damaged; re-export the mesh')
+      return
+    end if
+    if (tf%bytes < 0) return
+    most = tf%bytes/(2_i8*max(1, lines_each))
+    if (int(n, i8) > most) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': ' // what // ' is ' // str(n) // &
+        ', but the file (' // str(tf%bytes) // ' bytes) can hold at most ' // str(most) // &
+        ': the count is wrong, the file is damaged; re-export the mesh')
+    end if
+  end subroutine check_count
 
   subroutine close_text_file(tf)
     type(text_file_t), intent(inout) :: tf
@@ -67,16 +98,30 @@ contains
     character(len=:), allocatable, intent(out) :: line
     logical, intent(out) :: eof
     type(error_t), intent(inout) :: err
-    character(len=256) :: buf
+    character(len=4096) :: buf
     character(len=512) :: msg
     integer :: ios, nread
     line = ''
     eof = .false.
+    ! A unit read past its end fails with a runtime message: once the end
+    ! is met, every further call returns eof (a reader that looks for a
+    ! continuation after a trailing comma on the last line asks again).
+    if (tf%at_end) then
+      eof = .true.
+      return
+    end if
     ! Non-advancing reads in chunks: a line has no length limit.
     do
       read(tf%unit, '(a)', advance='no', size=nread, iostat=ios, iomsg=msg) buf
       if (ios == 0) then
         line = line // buf(1:nread)
+        ! /dev/zero or a binary file would otherwise be read without end
+        if (len(line) > MAX_LINE) then
+          call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no + 1) // ': a line longer than ' // &
+            str(MAX_LINE) // ' characters: this is not a mesh text file')
+          eof = .true.
+          return
+        end if
         cycle
       end if
       if (is_iostat_eor(ios)) then
@@ -84,6 +129,10 @@ contains
         exit
       end if
       if (is_iostat_end(ios)) then
+        tf%at_end = .true.
+        ! a last line without its end of line is still a line
+        line = line // buf(1:nread)
+        if (len(line) > 0) exit
         eof = .true.
         return
       end if

@@ -8,6 +8,7 @@ module raccord_model
   use raccord_kinds, only: wp
   use raccord_elastic_block, only: elastic_block_t
   use raccord_amplitude, only: interpolate_table
+  use raccord_threads, only: requested_thread_count
   implicit none
   private
 
@@ -99,17 +100,12 @@ contains
     end if
   end function amplitude_at
 
-  !> Threads a run asks for: with OMP_NUM_THREADS set, the OpenMP runtime's
-  !> reading of it (its first level for a nested list); unset, 1, so that a
-  !> run, a test or one case of a sweep never takes every core unasked
+  !> Threads a run asks for: OMP_NUM_THREADS validated and capped at the
+  !> available processors (raccord_threads); unset, 1, so that a run, a
+  !> test or one case of a sweep never takes every core unasked
   !> (doc/performance.md, "Threading"). Always 1 in a build without OpenMP.
   integer function requested_threads() result(n)
-    !$ use omp_lib, only: omp_get_max_threads
-    integer :: length, status
-    n = 1
-    call get_environment_variable('OMP_NUM_THREADS', length=length, status=status)
-    if (status /= 0 .or. length == 0) return
-    !$ n = max(1, omp_get_max_threads())
+    n = requested_thread_count()
   end function requested_threads
 
   !> Run the model's loops on n threads (n < 1 counts as 1): the per-node

@@ -118,12 +118,19 @@ contains
     character(len=256) :: msg
     character(len=1) :: c, quote
     integer :: u, ios, lnum, i, j, nblock
-    logical :: in_group, in_quote, at_end
+    logical :: in_group, in_quote, at_end, is_folder
     type(deck_block_t), allocatable :: grown(:)
 
     allocate(blocks(16))
     nblock = 0
     msg = ''
+    ! A folder opens and reads as an empty file: say what it is.
+    inquire(file=path // '/.', exist=is_folder)
+    if (is_folder) then
+      call raise_error(err, EXIT_INPUT, path // ': is a folder, not a scene deck; give the deck file ' // &
+        '(e.g. ' // path // '/NAME.nml)')
+      return
+    end if
     open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call raise_error(err, EXIT_INPUT, path // ': cannot open the scene deck (' // trim(msg) // &
@@ -144,6 +151,10 @@ contains
       end if
       if (at_end) exit lines
       lnum = lnum + 1
+      ! A UTF-8 byte-order mark (editors on Windows save one) is no text.
+      if (lnum == 1 .and. len(line) >= 3) then
+        if (line(1:3) == achar(239) // achar(187) // achar(191)) line = line(4:)
+      end if
       ! The segment of this line that belongs to the open group, as text and mask.
       seg_text = ''
       seg_mask = ''
@@ -281,7 +292,8 @@ contains
     logical, intent(out) :: at_end
     integer, intent(out) :: ios
     character(len=*), intent(inout) :: msg
-    character(len=256) :: buf
+    character(len=4096) :: buf
+    integer, parameter :: max_line = 1000000
     integer :: n
     line = ''
     at_end = .false.
@@ -289,6 +301,13 @@ contains
       read(u, '(a)', advance='no', size=n, iostat=ios, iomsg=msg) buf
       if (ios > 0) return
       line = line // buf(1:n)
+      ! A line has a length limit: /dev/zero or a binary file given as the
+      ! deck would otherwise be read into memory without end.
+      if (len(line) > max_line) then
+        ios = 1
+        msg = 'a line longer than ' // str(max_line) // ' characters: not a text deck'
+        return
+      end if
       if (ios == iostat_eor) exit
       if (ios == iostat_end) then
         ! A last line without a newline still counts as a line.

@@ -4,6 +4,7 @@
 !> section 2). Lagrange-multiplier contact adds no stiffness, so contact does
 !> not shrink the step.
 module raccord_time_step
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
@@ -40,6 +41,12 @@ contains
     real(wp) :: target
 
     plan%t_end = scene%time%t_end
+    if (.not. ieee_is_finite(model%w2_bound)) then
+      call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': the stable time step cannot be computed, ' // &
+        'the largest element eigenvalue is ' // str(model%w2_bound) // ': check the &body young and density ' // &
+        'and the &mesh scale (units of the mesh and the deck)')
+      return
+    end if
     if (model%w2_bound <= 0.0_wp) then
       call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': the model has no stiffness ' // &
         '(no element in any &body); check the &body element sets.')
@@ -55,11 +62,15 @@ contains
         return
       end if
       target = scene%time%dt
+      call check_step_count(scene, plan%t_end/target, target, plan%dt_stable, err)
+      if (err%failed()) return
       plan%nsteps = max(1_i8, nint(plan%t_end/target, i8))
       ! A fixed dt is kept as given; the run stops at the step nearest to t_end.
       plan%dt = target
     else
       target = scene%time%safety*plan%dt_stable
+      call check_step_count(scene, plan%t_end/target, target, plan%dt_stable, err)
+      if (err%failed()) return
       plan%nsteps = max(1_i8, ceiling(plan%t_end/target, i8))
       plan%dt = plan%t_end/real(plan%nsteps, wp)
     end if
@@ -158,4 +169,19 @@ contains
       end do
     end do
   end subroutine check_deformation
+
+  !> The step count t_end/dt must be a finite number that fits the step
+  !> counter: above 2^53 the times n*dt of successive steps can no longer be
+  !> told apart in double precision (and above 2^63 the count overflowed to
+  !> one step of a dt far above the stable one).
+  subroutine check_step_count(scene, ratio, dt, dt_stable, err)
+    type(scene_t), intent(in) :: scene
+    real(wp), intent(in) :: ratio, dt, dt_stable
+    type(error_t), intent(inout) :: err
+    real(wp), parameter :: max_steps = 2.0_wp**53
+    if (ieee_is_finite(ratio) .and. ratio <= max_steps) return
+    call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &time t_end = ' // str(scene%time%t_end) // &
+      ' with a step of ' // str(dt) // ' (stable step ' // str(dt_stable) // ') needs ' // str(ratio) // &
+      ' steps, more than the 2^53 = ' // str(max_steps) // ' a run can count: shorten t_end')
+  end subroutine check_step_count
 end module raccord_time_step

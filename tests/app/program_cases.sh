@@ -394,6 +394,37 @@ huge_values)
   expect_text "$work/stdout.txt" 'pressure = 1.0E+150' "stdout"
   ;;
 
+verify)
+  # raccord --verify: a complete results file reads back intact (exit 0);
+  # one byte changed in the stored text of /scene (found by its content) is
+  # caught by that text's crc32 attribute (exit 2, the dataset named); a
+  # file that is not HDF5, a missing file and --verify with a scene are
+  # refused.
+  run --output out "$data/bar_coarse.nml"
+  expect_code 0
+  h5=$work/out/bar_coarse.h5
+  run --verify out/bar_coarse.h5
+  expect_code 0
+  expect_text "$work/stdout.txt" "raccord results, intact" "stdout"
+  off=$(grep -a -b -o 'bar_coarse.msh' "$h5" | head -n 1 | cut -d: -f1)
+  if [ -n "$off" ]; then
+    cp "$h5" "$work/damaged.h5"
+    printf 'X' | dd of="$work/damaged.h5" bs=1 seek="$off" conv=notrunc 2> /dev/null
+    run --verify damaged.h5
+    expect_code 2
+    expect_text "$work/stderr.txt" "damaged: the dataset /scene" "stderr"
+  else
+    fail "the deck's mesh name is not stored in $h5"
+  fi
+  run --verify "$data/bar_coarse.nml"
+  expect_code 2
+  expect_text "$work/stderr.txt" "cannot be opened as HDF5" "stderr"
+  run --verify no_such.h5
+  expect_code 2
+  run --verify out/bar_coarse.h5 "$data/bar_coarse.nml"
+  expect_code 1
+  ;;
+
 *)
   echo "unknown case '$case_name'" >&2
   exit 1

@@ -38,6 +38,14 @@
 # .part / .incomplete, no ERROR line, no crash). A mutation of comments only
 # ("valid") must run like that.
 #
+# Special runs (setup= in case.txt, see make_cases.sh and
+# make_cases_hostile.sh): not_writable, disk_full and disk_full_now (a
+# tmpfs, root only), locked (flock(1) holds <stem>.lock during the run),
+# damage (a run stopped with --wall-clock, one of its files damaged, then
+# the case's --restart; an exit 0 must reproduce an uninterrupted run, by
+# cmp and h5diff). env= sets one environment variable for the run; args
+# are split as the shell would split them ('' is an empty argument).
+#
 # Known failures (known_failures.txt next to this script: one case name a
 # line, "#" comments naming the bug) are run and reported, but do not count
 # among the failures; one that passes is reported so it can be moved back.
@@ -90,14 +98,85 @@ mkdir -p "$probe/ro" && chmod 555 "$probe/ro"
 if (: > "$probe/ro/x") 2> /dev/null; then chmod_protects=0; else chmod_protects=1; fi
 chmod 755 "$probe/ro"; rm -rf "$probe"
 
-is_known() { [ -f "$known_list" ] && awk -v n="$1" '{ sub(/#.*/, "") } $1 == n { f = 1 } END { exit !f }' "$known_list"; }
-meta() { sed -n "s/^$1=//p" "$2/case.txt"; }
+# case_stem ARGS: the run's name, from the deck (the last argument).
+case_stem() { echo "$1" | awk '{ f = $NF; sub(/.*\//, "", f); sub(/\.[^.]*$/, "", f); print f }'; }
+
+# damage_setup DIR: run the case's deck until a wall-clock stop (exit 5),
+# then damage one of its files as damage= says. Sets damage_failed on failure.
+damage_setup() {
+  ddir=$1
+  deck=$m_deck; dstem=${deck%.nml}
+  # shellcheck disable=SC2086
+  set -- $m_damage
+  target=$ddir/out/$dstem$1; r=$2; mode=$3
+  (cd "$ddir" && timeout -k 5 "$limit" "$raccord" -q --wall-clock 0.001 -o out "$deck" > prerun.txt 2>&1)
+  pcode=$?
+  if [ "$pcode" -ne 5 ] || [ ! -f "$target" ]; then
+    damage_failed="setup: the run to be stopped exited $pcode (expected 5 with $target)"; return 1
+  fi
+  size=$(wc -c < "$target" | tr -d ' ')
+  pos=$(awk -v r="$r" -v n="$size" 'BEGIN { printf "%d", r / 1e6 * n }')
+  case $mode in
+    flip)
+      old=$(od -An -tu1 -j "$pos" -N1 "$target" | tr -d ' \n')
+      new=$((old ^ (1 << (r % 8))))
+      # shellcheck disable=SC2059
+      printf "\\$(printf %03o "$new")" | dd of="$target" bs=1 seek="$pos" conv=notrunc 2> /dev/null ;;
+    zero) dd if=/dev/zero of="$target" bs=1 count=16 seek="$pos" conv=notrunc 2> /dev/null ;;
+    cut) head -c "$pos" "$target" > "$target.cut" && mv "$target.cut" "$target" ;;
+  esac
+  echo "damage: $mode at byte $pos of $size in $target" > "$ddir/setup.txt"
+  return 0
+}
+
+# damage_same DIR STEM: the restarted results must equal those of an
+# uninterrupted run of the same deck (run once per deck, kept in ref/).
+damage_same() {
+  sdir=$1; sstem=$2; deck=$m_deck
+  ref=$work/ref/$(cat "$sdir/$deck" | cksum | tr ' ' _)
+  if [ ! -d "$ref" ]; then
+    mkdir -p "$ref" && cp "$sdir/$deck" "$sdir"/*.msh "$sdir"/*.inp "$ref/" 2> /dev/null
+    (cd "$ref" && "$raccord" -q -o out "$deck" > /dev/null 2>&1)
+  fi
+  for f in history.txt contact1.txt; do
+    [ -f "$ref/out/$sstem.$f" ] || continue
+    cmp -s "$sdir/out/$sstem.$f" "$ref/out/$sstem.$f" || reason="$reason exit 0 after damage, but $sstem.$f differs from an uninterrupted run;"
+  done
+  # /scene holds the deck's path, which differs between the two folders
+  if command -v h5diff > /dev/null 2>&1 && \
+      ! h5diff -q --exclude-path /scene "$sdir/out/$sstem.h5" "$ref/out/$sstem.h5" > /dev/null 2>&1; then
+    reason="$reason exit 0 after damage, but $sstem.h5 differs from an uninterrupted run (h5diff);"
+  fi
+}
+
+# The known failures, read once: " name name ... ".
+known=" "
+[ -f "$known_list" ] && known=" $(awk '{ sub(/#.*/, "") } NF { printf "%s ", $1 }' "$known_list")"
+is_known() { case $known in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
+# load_meta DIR: the fields of DIR/case.txt into m_<field>, with shell
+# builtins only (a sed per field and case cost more than the runs).
+load_meta() {
+  m_family=; m_kind=; m_expect=; m_args=; m_setup=; m_env=; m_names=; m_deck=; m_damage=
+  while IFS= read -r line; do
+    case $line in
+      family=*) m_family=${line#family=} ;;
+      kind=*) m_kind=${line#kind=} ;;
+      expect=*) m_expect=${line#expect=} ;;
+      args=*) m_args=${line#args=} ;;
+      setup=*) m_setup=${line#setup=} ;;
+      env=*) m_env=${line#env=} ;;
+      names=*) m_names=${line#names=} ;;
+      deck=*) m_deck=${line#deck=} ;;
+      damage=*) m_damage=${line#damage=} ;;
+    esac
+  done < "$1/case.txt"
+}
 
 # check_case DIR: run the case in DIR; set $reason (empty = passed) and $outcome.
 check_case() {
   dir=$1
-  family=$(meta family "$dir"); kind=$(meta kind "$dir"); expect=$(meta expect "$dir")
-  args=$(meta args "$dir"); setup=$(meta setup "$dir")
+  load_meta "$dir"
+  family=$m_family; kind=$m_kind; expect=$m_expect; args=$m_args; setup=$m_setup
   reason=""; outcome=bad
   case $setup in
     not_writable)
@@ -107,20 +186,41 @@ check_case() {
       if [ "$chmod_protects" = 1 ]; then mkdir "$dir/ro" && chmod 555 "$dir/ro"
       else : > "$dir/ro"; echo "setup: running as root, ro is a regular file" > "$dir/setup.txt"; fi
       ;;
-    disk_full)
+    disk_full|disk_full_now)
       mkdir -p "$dir/out"
       if [ "$(id -u)" -ne 0 ] || ! mount -t tmpfs -o size=64k tmpfs "$dir/out" 2> /dev/null; then
         outcome=skipped; echo "setup: cannot mount a tmpfs (not root?): skipped" > "$dir/setup.txt"
         return
       fi
       mounts="$mounts $dir/out"
+      # full before the run starts
+      [ "$setup" = disk_full_now ] && head -c 70000 /dev/zero > "$dir/out/filler" 2> /dev/null
+      ;;
+    locked)
+      # another process holds the stem's lock (flock(1), the same flock(2)
+      # raccord takes) for the whole run
+      if ! command -v flock > /dev/null 2>&1; then
+        outcome=skipped; echo "setup: no flock(1): skipped" > "$dir/setup.txt"; return
+      fi
+      mkdir -p "$dir/out"
+      lockfile=$dir/out/$(case_stem "$args").lock
+      flock -o "$lockfile" sleep 30 > /dev/null 2>&1 &
+      holder=$!
+      n=0
+      while flock -n "$lockfile" true 2> /dev/null && [ "$n" -lt 100 ]; do sleep 0.02; n=$((n + 1)); done
+      ;;
+    damage)
+      damage_setup "$dir" || { reason=$damage_failed; return; }
       ;;
   esac
-  # shellcheck disable=SC2086
-  (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=$bt exec timeout -k 5 "$limit" "$raccord" $args > stdout.txt 2> stderr.txt)
+  envv=$m_env
+  [ -n "$envv" ] || envv=FUZZ_NO_ENV=1
+  eval "set -- $args"
+  (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=$bt exec env "$envv" timeout -k 5 "$limit" "$raccord" "$@" > stdout.txt 2> stderr.txt)
   code=$?
   echo "$code" > "$dir/exit.txt"
-  if [ "$setup" = disk_full ]; then
+  if [ "$setup" = locked ]; then kill "$holder" 2> /dev/null; wait "$holder" 2> /dev/null; fi
+  if [ "$setup" = disk_full ] || [ "$setup" = disk_full_now ]; then
     ls -la "$dir/out" > "$dir/out.listing.txt" 2>&1
     df -k "$dir/out" >> "$dir/out.listing.txt" 2>&1
     # keep what the run left (for the checks below and a look later), then unmount
@@ -135,7 +235,7 @@ check_case() {
   elif [ "$code" -ge 128 ]; then
     reason="killed by a signal (exit $code)"
   fi
-  crash=$(grep -a -m1 -E 'Fortran runtime error|Program received signal|Segmentation fault|Aborted|Floating point exception|malloc\(\)|double free|HDF5-DIAG' "$err")
+  crash=$(grep -a -m1 -E 'Fortran runtime error|Program received signal|Segmentation fault|Aborted|Floating point exception|malloc\(\)|double free|HDF5-DIAG|HDF5: infinite loop|libgomp: (Out of memory|Thread creation)' "$err")
   [ -z "$reason" ] && [ -n "$crash" ] && reason="crash on stderr: $crash"
   # raccord leaves with its exit code and nothing after its own message: a
   # backtrace or gfortran's ERROR STOP text is a stop raccord did not make.
@@ -143,8 +243,9 @@ check_case() {
     reason="runtime stop text on stderr: $(grep -a -m1 -E 'Backtrace|^ERROR STOP' "$err")"
   fi
   # Complete-looking result files anywhere in the case folder.
+  # (a checkpoint, <stem>.checkpoint.h5, is no result)
   complete=$(cd "$dir" && find . -type f \( -name '*.h5' -o -name '*.xmf' -o -name '*.history.txt' -o -name '*.contact*.txt' \) \
-    ! -name '*.incomplete*' ! -name '*.part*' -print | sort | tr '\n' ' ')
+    ! -name '*.incomplete*' ! -name '*.part*' ! -name '*.checkpoint.h5' -print | sort | tr '\n' ' ')
 
   if [ "$code" -eq 0 ] && [ -z "$reason" ]; then
     case $kind in
@@ -153,12 +254,16 @@ check_case() {
         outcome=valid
         stem=$(echo "$args" | awk '{ f = $NF; sub(/.*\//, "", f); sub(/\.[^.]*$/, "", f); print f }')
         odir=$(echo "$args" | awk '{ for (i = 1; i < NF; i++) if ($i == "-o" || $i == "--output") print $(i + 1) }')
+        if [ "$setup" = damage ]; then stem=${m_deck%.nml}; odir=out; fi
         for ext in h5 xmf history.txt; do
           [ -s "$dir/$odir/$stem.$ext" ] || reason="$reason exit 0 but $odir/$stem.$ext missing;"
         done
         left=$(cd "$dir" && find . -name '*.part*' -o -name '*.incomplete*' | tr '\n' ' ')
         [ -n "$left" ] && reason="$reason exit 0 but left $left;"
         grep -aq '^ERROR' "$err" && reason="$reason exit 0 with an ERROR line: $(grep -a -m1 '^ERROR' "$err");"
+        # a restart from damaged files may only succeed with the results
+        # of an uninterrupted run
+        [ "$setup" = damage ] && [ -z "$reason" ] && damage_same "$dir" "$stem"
         ;;
     esac
     return
@@ -175,7 +280,7 @@ check_case() {
   if ! grep -aq '^ERROR \[[^]]*\] *[^ ]' "$err"; then
     reason="${reason:+$reason; }no 'ERROR [...] message' line on stderr"
   else
-    names=$(meta names "$dir")
+    names=$m_names
     if [ -n "$names" ] && ! grep -a '^ERROR \[' "$err" | grep -qiF -- "$names"; then
       reason="${reason:+$reason; }the ERROR line does not name '$names': $(grep -a -m1 '^ERROR \[' "$err")"
     fi
@@ -192,7 +297,7 @@ for dir in "$cases"/*/; do
   name=$(basename "$dir")
   if [ -n "$only" ]; then case $name in *"$only"*) ;; *) continue ;; esac; fi
   check_case "$dir"
-  echo "$(meta family "$dir") $outcome ${reason:+fail}" >> "$work/families.txt"
+  echo "$m_family $outcome ${reason:+fail}" >> "$work/families.txt"
   if [ "$outcome" = skipped ]; then
     nskip=$((nskip + 1)); echo "skip $name: $(cat "$dir/setup.txt")"; continue
   fi
@@ -201,8 +306,9 @@ for dir in "$cases"/*/; do
     else nknown_fixed=$((nknown_fixed + 1)); echo "KNOWN FAILURE NOW PASSES $dir: move it out of known_failures.txt"; fi
     continue
   fi
-  if [ -n "$reason" ] && [ "$bt" = 0 ] && [ "$(meta setup "$dir")" = "" ]; then
-    (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=1 timeout -k 5 "$limit" "$raccord" $(meta args "$dir") > /dev/null 2> stderr.backtrace.txt)
+  if [ -n "$reason" ] && [ "$bt" = 0 ] && [ "$m_setup" = "" ]; then
+    eval "set -- $m_args"
+    (cd "$dir" && GFORTRAN_ERROR_BACKTRACE=1 timeout -k 5 "$limit" "$raccord" "$@" > /dev/null 2> stderr.backtrace.txt)
   fi
   if [ -n "$reason" ]; then
     failed=$((failed + 1)); echo "FAIL $dir: $reason"

@@ -20,7 +20,11 @@
 #                            matters (a comment), which must run through
 #   expect=<codes>           allowed non-zero exit codes, e.g. "2" or "2 3"
 #   args=<arguments>         raccord's arguments, run from the case folder
-#   setup=<name>             optional: a special run (disk_full, not_writable)
+#   setup=<name>             optional: a special run (disk_full, disk_full_now,
+#                            not_writable, locked, damage)
+#   env=<VAR=value>          optional: one environment variable for the run
+#   damage=<suffix> <r> <mode>, deck=<deck>   with setup=damage (see
+#                            make_cases_hostile.sh)
 #   note=<text>              what was done to the seed
 #
 # The cases are the same on every run and every machine: the positions come
@@ -43,6 +47,8 @@
 #   outdir    an output folder that cannot be created or written         4
 #   diskfull  the output folder fills up during the run (tmpfs)          4
 #   cmdline   bad command lines                                          1
+#   and the families of make_cases_hostile.sh (sizes, overflow, paths,
+#   damage, meshmix, threads, validdeck, messages), described there.
 set -u
 LC_ALL=C
 export LC_ALL
@@ -791,5 +797,9 @@ cmd_case two-scenes "two scenes" plate.nml plate.nml
 cmd_case output-without-folder "--output at the end" plate.nml --output
 cmd_case o-without-folder "-o at the end" plate.nml -o
 cmd_case bad-short-option "an unknown short option" -x plate.nml
+
+# The hostile-input families (issue #18): sizes, overflow, paths, damage,
+# meshmix, threads, validdeck, messages.
+. "$(dirname "$0")/make_cases_hostile.sh"
 
 echo "make_cases: $ncase cases in $cases"
