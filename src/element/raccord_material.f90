@@ -13,9 +13,11 @@
 !>  - St Venant-Kirchhoff, W = (lam/2)(tr E)^2 + mu E:E,
 !>      S = lam tr(E) I + 2 mu E,  E = (C - I)/2.                           (M-3)
 !>
-!> Every routine works on one point and is pure, so that the element kernels
-!> call them inside vectorised loops over a chunk of elements. Components:
-!> a 2x2 in-plane tensor is (11, 21, 12, 22), column-major like F(2,2).
+!> The routines here work on one point: the stress recovery for output and
+!> the tests use them; the time loop's kernel has its own vectorised chunk
+!> forms of the same laws (raccord_finite_kernel), checked against these and
+!> the closed forms by tests/element/test_finite.f90 and tests/finite.
+!> Components: a 2x2 in-plane tensor is (11, 21, 12, 22), column-major like F(2,2).
 module raccord_material
   use raccord_kinds, only: wp
   implicit none
@@ -38,9 +40,7 @@ module raccord_material
   end type moduli_t
 
   public :: make_moduli, kinematics_name, material_name, volumetric_name
-  public :: neo_hooke_tau, neo_hooke_iso_tau, neo_hooke_energy, neo_hooke_iso_energy, volumetric_energy
-  public :: svk_tau, svk_energy, first_piola, cauchy_from_tau, log_strain
-  public :: wave_modulus_neo_hooke, wave_modulus_svk
+  public :: neo_hooke_tau, neo_hooke_iso_tau, svk_tau, cauchy_from_tau, log_strain
 
 contains
 
@@ -125,27 +125,6 @@ contains
     tau33 = gj*(1.0_wp - tr3)
   end subroutine neo_hooke_iso_tau
 
-  !> Stored energy per reference volume of neo-Hooke (M-1).
-  pure real(wp) function neo_hooke_energy(m, f, detf) result(w)
-    type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: f(4), detf
-    w = neo_hooke_iso_energy(m, f, detf) + volumetric_energy(m, detf)
-  end function neo_hooke_energy
-
-  !> Isochoric part C10 (Ibar1 - 3) of (M-1).
-  pure real(wp) function neo_hooke_iso_energy(m, f, detf) result(w)
-    type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: f(4), detf
-    w = 0.5_wp*m%g*((f(1)**2 + f(2)**2 + f(3)**2 + f(4)**2 + 1.0_wp)/cbrt2(detf) - 3.0_wp)
-  end function neo_hooke_iso_energy
-
-  !> Volumetric part (J - 1)^2 / D1 = (K/2)(J - 1)^2 of (M-1).
-  pure real(wp) function volumetric_energy(m, detf) result(w)
-    type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: detf
-    w = 0.5_wp*m%k*(detf - 1.0_wp)**2
-  end function volumetric_energy
-
   !> Kirchhoff stress of St Venant-Kirchhoff (M-3), tau = F S F^T, plane strain.
   pure subroutine svk_tau(m, f, tau, tau33)
     type(moduli_t), intent(in) :: m
@@ -171,30 +150,6 @@ contains
     tau(4) = p21*f(2) + p22*f(4)
     tau33 = tr          ! S33 = lam tr E, F33 = 1
   end subroutine svk_tau
-
-  !> Stored energy per reference volume of St Venant-Kirchhoff (M-3).
-  pure real(wp) function svk_energy(m, f) result(w)
-    type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: f(4)
-    real(wp) :: e11, e22, e12
-    e11 = 0.5_wp*(f(1)*f(1) + f(2)*f(2) - 1.0_wp)
-    e22 = 0.5_wp*(f(3)*f(3) + f(4)*f(4) - 1.0_wp)
-    e12 = 0.5_wp*(f(1)*f(3) + f(2)*f(4))
-    w = 0.5_wp*m%lam*(e11 + e22)**2 + m%g*(e11**2 + e22**2 + 2.0_wp*e12**2)
-  end function svk_energy
-
-  !> First Piola-Kirchhoff stress P = tau F^-T (in-plane).
-  pure function first_piola(f, detf, tau) result(p)
-    real(wp), intent(in) :: f(4), detf, tau(4)
-    real(wp) :: p(4)
-    real(wp) :: r
-    ! F^-T = (1/J) [[F22, -F21], [-F12, F11]]
-    r = 1.0_wp/detf
-    p(1) = r*(tau(1)*f(4) - tau(3)*f(3))
-    p(2) = r*(tau(2)*f(4) - tau(4)*f(3))
-    p(3) = r*(tau(3)*f(1) - tau(1)*f(2))
-    p(4) = r*(tau(4)*f(1) - tau(2)*f(2))
-  end function first_piola
 
   !> Cauchy stress (sxx, syy, sxy, szz) = tau / J.
   pure function cauchy_from_tau(detf, tau, tau33) result(s)
@@ -238,38 +193,6 @@ contains
     e(3) = (h1 - h2)*c*s
     e(4) = 0.0_wp
   end function log_strain
-
-  !> Bound of rho0 c^2 (current wave speed c) for neo-Hooke at F (method
-  !> brief 5.2): K J^2 + (4 mubar + 7 max|tau_dev,a|)/3, mubar = (G/3) tr Bbar,
-  !> tau_dev,a the principal deviatoric Kirchhoff stresses. Equals K + 4G/3 at F = I.
-  pure real(wp) function wave_modulus_neo_hooke(m, f, detf) result(r)
-    type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: f(4), detf
-    real(wp) :: tau(4), tau33, rad, mubar, tmax, b11, b22
-    call neo_hooke_iso_tau(m, f, detf, tau, tau33)
-    b11 = f(1)*f(1) + f(3)*f(3)
-    b22 = f(2)*f(2) + f(4)*f(4)
-    mubar = m%g*(b11 + b22 + 1.0_wp)/(3.0_wp*cbrt2(detf))
-    rad = sqrt((0.5_wp*(tau(1) - tau(4)))**2 + tau(2)**2)
-    tmax = max(abs(0.5_wp*(tau(1) + tau(4)) + rad), abs(0.5_wp*(tau(1) + tau(4)) - rad), abs(tau33))
-    r = m%k*detf*detf + (4.0_wp*mubar + 7.0_wp*tmax)/3.0_wp
-  end function wave_modulus_neo_hooke
-
-  !> Bound of rho0 c^2 for St Venant-Kirchhoff at F (method brief 5.2):
-  !> (lam + 2 mu) lmax(B)^2 + max|tau_a|.
-  pure real(wp) function wave_modulus_svk(m, f) result(r)
-    type(moduli_t), intent(in) :: m
-    real(wp), intent(in) :: f(4)
-    real(wp) :: tau(4), tau33, b11, b22, b12, bmax, rad, tmax
-    b11 = f(1)*f(1) + f(3)*f(3)
-    b22 = f(2)*f(2) + f(4)*f(4)
-    b12 = f(1)*f(2) + f(3)*f(4)
-    bmax = max(1.0_wp, 0.5_wp*(b11 + b22) + sqrt((0.5_wp*(b11 - b22))**2 + b12**2))
-    call svk_tau(m, f, tau, tau33)
-    rad = sqrt((0.5_wp*(tau(1) - tau(4)))**2 + tau(2)**2)
-    tmax = max(abs(0.5_wp*(tau(1) + tau(4)) + rad), abs(0.5_wp*(tau(1) + tau(4)) - rad), abs(tau33))
-    r = (m%lam + 2.0_wp*m%g)*bmax*bmax + tmax
-  end function wave_modulus_svk
 
   !> J^(2/3) for J > 0 (the caller has checked J > 0).
   elemental real(wp) function cbrt2(j) result(r)
