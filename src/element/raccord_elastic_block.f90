@@ -209,9 +209,8 @@ module raccord_elastic_block
       real(wp), intent(in) :: u(:,:)
       real(wp), intent(inout) :: s(:,:), wsum(:)
     end subroutine add_element_small_strain
-    !> H = sqrt(c) J^-1 and c = w detJ thickness at every Gauss point (theory
-    !> eq. 6.1), for the Q8 kernel and every finite-strain kernel. Fails
-    !> (EXIT_INPUT) on detJ <= 0, naming the element.
+    !> H = sqrt(c) J^-1 and c at every Gauss point of a Q8 block (theory
+    !> eq. 6.1). Fails (EXIT_INPUT) on detJ <= 0, naming the element.
     module subroutine init_gauss_maps(blk, x, err)
       type(elastic_block_t), intent(inout) :: blk
       real(wp), intent(in) :: x(:,:)

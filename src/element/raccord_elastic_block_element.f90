@@ -292,4 +292,39 @@ contains
       wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
     end do
   end procedure add_element_small_strain
+
+  !> H = sqrt(c) J^-1 and c = w detJ thickness at every Gauss point of a Q8
+  !> block (theory eq. 6.1; init_elastic_block has allocated them): the Q8
+  !> kernel's data, and J0^-1 = H/sqrt(c) of the finite Q8 kernel. Fails
+  !> (EXIT_INPUT) on detJ <= 0, naming the element.
+  module procedure init_gauss_maps
+    character(len=*), parameter :: where = 'init_elastic_block: '
+    real(wp) :: jac(2, 2), detj, cg, sq, xe(2, max_nen)
+    integer :: e, g, ic, il
+    blk%h = 0.0_wp
+    do e = 1, blk%nel
+      xe(:, 1:blk%nen) = x(:, blk%conn(:, e))
+      ic = (e - 1)/chunk_len + 1
+      il = e - (ic - 1)*chunk_len
+      do g = 1, blk%ngp
+        ! J_ik = dx_i/dxi_k (theory eq. 1.4)
+        jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
+        detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+        if (.not. (detj > 0.0_wp)) then
+          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(blk%etype) // &
+            ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
+            '; its nodes must be counter-clockwise and the element not degenerate')
+          return
+        end if
+        cg = blk%wts(g)*detj*blk%thickness
+        blk%c(g, e) = cg
+        sq = sqrt(cg)/detj
+        ! H = sqrt(c) J^-1, stored column-major (H11, H21, H12, H22)
+        blk%h(il, 1, g, ic) = sq*jac(2, 2)
+        blk%h(il, 2, g, ic) = -sq*jac(2, 1)
+        blk%h(il, 3, g, ic) = -sq*jac(1, 2)
+        blk%h(il, 4, g, ic) = sq*jac(1, 1)
+      end do
+    end do
+  end procedure init_gauss_maps
 end submodule raccord_elastic_block_element

@@ -10,49 +10,6 @@ submodule (raccord_elastic_block) raccord_elastic_block_finite
 
 contains
 
-  !> H = sqrt(c) J^-1 and c = w detJ thickness at every Gauss point (theory
-  !> eq. 6.1), for the Q8 kernel and every finite-strain kernel. Fails
-  !> (EXIT_INPUT) on detJ <= 0, naming the element.
-  module procedure init_gauss_maps
-    character(len=*), parameter :: where = 'init_elastic_block: '
-    real(wp) :: jac(2, 2), detj, cg, sq, xe(2, max_nen)
-    integer :: e, g, ic, il, stat
-    character(len=256) :: msg
-    if (.not. allocated(blk%h)) then
-      allocate(blk%h(chunk_len, 4, blk%ngp, blk%nchunk), blk%c(blk%ngp, blk%nel), stat=stat, errmsg=msg)
-      if (stat /= 0) then
-        call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
-          ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
-        return
-      end if
-    end if
-    blk%h = 0.0_wp
-    do e = 1, blk%nel
-      xe(:, 1:blk%nen) = x(:, blk%conn(:, e))
-      ic = (e - 1)/chunk_len + 1
-      il = e - (ic - 1)*chunk_len
-      do g = 1, blk%ngp
-        ! J_ik = dx_i/dxi_k (theory eq. 1.4)
-        jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
-        detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
-        if (.not. (detj > 0.0_wp)) then
-          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(blk%etype) // &
-            ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
-            '; its nodes must be counter-clockwise and the element not degenerate')
-          return
-        end if
-        cg = blk%wts(g)*detj*blk%thickness
-        blk%c(g, e) = cg
-        sq = sqrt(cg)/detj
-        ! H = sqrt(c) J^-1, stored column-major (H11, H21, H12, H22)
-        blk%h(il, 1, g, ic) = sq*jac(2, 2)
-        blk%h(il, 2, g, ic) = -sq*jac(2, 1)
-        blk%h(il, 3, g, ic) = -sq*jac(1, 2)
-        blk%h(il, 4, g, ic) = sq*jac(1, 1)
-      end do
-    end do
-  end procedure init_gauss_maps
-
   !> Turn a block set up by init_elastic_block into a finite-strain block
   !> (total Lagrangian, doc/theory-finite.md) of the given material
   !> (MAT_NEO_HOOKE or MAT_SVK) and volumetric treatment (VOL_FULL or
@@ -85,8 +42,6 @@ contains
     blk%density = density
     blk%moduli = make_moduli(blk%young, blk%poisson)
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
-    if (blk%etype /= ELEM_Q4 .and. .not. allocated(blk%h)) call init_gauss_maps(blk, x, err)
-    if (err%failed()) return
     allocate(blk%pg(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
       blk%vol0(chunk_len, blk%nchunk), &
       blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
@@ -115,7 +70,7 @@ contains
         end do
       else
         do g = 1, blk%ngp
-          ! J0^-1 = H / sqrt(c), c (init_gauss_maps)
+          ! J0^-1 = H / sqrt(c), c (init_gauss_maps, at init_elastic_block)
           blk%pg(il, :, g, ic) = blk%h(il, :, g, ic)/sqrt(blk%c(g, e))
           blk%cw(il, g, ic) = blk%c(g, e)
         end do
