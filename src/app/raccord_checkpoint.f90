@@ -96,7 +96,7 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: part, where, identity, g
     integer(hid_t) :: file
-    integer :: hdferr, k
+    integer :: hdferr, k, ib, kb
     integer(i8), allocatable :: file_crc(:)
     type(error_t) :: cerr
 
@@ -128,6 +128,18 @@ contains
       call h5_write_real(file, '/state/energy', [e%kinetic, e%internal, e%discrete, e%external, e%damping, &
         e%contact, e%friction, e%initial, e%balance, e%scale], where, err)
     end associate
+    ! j2 bodies: plastic work and the internal variables after the last step
+    if (allocated(state%plastic)) then
+      if (any_plastic(state)) call h5_write_real(file, '/state/plastic_work', [state%energy%plastic], where, err)
+      do ib = 1, size(state%plastic, 2)
+        do kb = 1, size(state%plastic, 1)
+          if (.not. allocated(state%plastic(kb, ib)%old)) cycle
+          associate (h => state%plastic(kb, ib)%old)
+            call h5_write_real(file, plastic_path(kb, ib), reshape(h, [size(h)/size(h, 4), size(h, 4)]), where, err)
+          end associate
+        end do
+      end do
+    end if
     ! Contact: the sets that warm-start the next solve, and the counters.
     do k = 1, size(pairs)
       g = '/contact/pair_' // str(k) // '/'
@@ -194,7 +206,8 @@ contains
     character(len=:), allocatable :: where, text, identity, g
     integer(i8) :: counters(4), two(2), three(3), one(1)
     real(wp) :: td(2), en(10), r1(1)
-    integer :: k
+    real(wp), allocatable :: flat(:,:)
+    integer :: k, ib, kb
 
     where = 'checkpoint "' // path // '"'
     identity = scene_identity(scene, err)
@@ -244,6 +257,26 @@ contains
         e%kinetic = en(1); e%internal = en(2); e%discrete = en(3); e%external = en(4); e%damping = en(5)
         e%contact = en(6); e%friction = en(7); e%initial = en(8); e%balance = en(9); e%scale = en(10)
       end associate
+      if (allocated(state%plastic)) then
+        if (any_plastic(state)) then
+          call h5_read_real(file, '/state/plastic_work', r1, where, err)
+          if (err%failed()) exit steps
+          state%energy%plastic = r1(1)
+        end if
+        do ib = 1, size(state%plastic, 2)
+          do kb = 1, size(state%plastic, 1)
+            if (.not. allocated(state%plastic(kb, ib)%old)) cycle
+            associate (h => state%plastic(kb, ib)%old)
+              allocate(flat(size(h)/size(h, 4), size(h, 4)))
+              call h5_read_real(file, plastic_path(kb, ib), flat, where, err)
+              if (err%failed()) exit steps
+              h = reshape(flat, shape(h))
+              deallocate(flat)
+            end associate
+            state%plastic(kb, ib)%new = state%plastic(kb, ib)%old
+          end do
+        end do
+      end if
       if (h5_link_exists(file, '/contact/pair_' // str(size(pairs) + 1))) then
         call raise_error(err, EXIT_INPUT, where // ' has more contact pairs than the scene (' // str(size(pairs)) // ')')
         exit steps
@@ -292,7 +325,7 @@ contains
     integer(i8), intent(in) :: file_crc(:)
     integer(i8) :: crc
     type(crc32_t) :: c
-    integer :: k
+    integer :: k, ib, kb
     call crc_add(c, identity)
     call crc_add(c, scene_path)
     call crc_add(c, [state%step, state%nsteps])
@@ -304,6 +337,17 @@ contains
       call crc_add(c, [e%kinetic, e%internal, e%discrete, e%external, e%damping, e%contact, e%friction, &
         e%initial, e%balance, e%scale])
     end associate
+    if (allocated(state%plastic)) then
+      if (any_plastic(state)) call crc_add(c, [state%energy%plastic])
+      do ib = 1, size(state%plastic, 2)
+        do kb = 1, size(state%plastic, 1)
+          if (.not. allocated(state%plastic(kb, ib)%old)) cycle
+          associate (h => state%plastic(kb, ib)%old)
+            call crc_add(c, reshape(h, [size(h)/size(h, 4), size(h, 4)]))
+          end associate
+        end do
+      end do
+    end if
     do k = 1, size(pairs)
       call crc_add(c, pairs(k)%status)
       call crc_add(c, pairs(k)%sigma)
@@ -458,4 +502,22 @@ contains
       end if
     end function next_end
   end function first_difference
+  !> Some block of the run is j2 (has internal variables).
+  pure logical function any_plastic(state)
+    type(state_t), intent(in) :: state
+    integer :: ib, kb
+    any_plastic = .false.
+    do ib = 1, size(state%plastic, 2)
+      do kb = 1, size(state%plastic, 1)
+        if (allocated(state%plastic(kb, ib)%old)) any_plastic = .true.
+      end do
+    end do
+  end function any_plastic
+
+  !> Dataset of the internal variables of block kb of body ib.
+  pure function plastic_path(kb, ib) result(p)
+    integer, intent(in) :: kb, ib
+    character(len=:), allocatable :: p
+    p = '/state/plastic_body' // str(ib) // '_block' // str(kb)
+  end function plastic_path
 end module raccord_checkpoint

@@ -10,7 +10,8 @@ module raccord_output
   use raccord_state, only: state_t
   use raccord_time_step, only: time_plan_t
   use raccord_scene, only: scene_t
-  use raccord_elastic_block, only: add_nodal_stress
+  use raccord_elastic_block, only: add_nodal_stress, add_nodal_plastic
+  use raccord_material, only: MAT_J2
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
     results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
@@ -250,7 +251,7 @@ contains
     character(len=*), intent(in) :: stem
     type(output_mark_t), intent(in) :: mark
     type(error_t), intent(inout) :: err
-    character(len=16), allocatable :: fields(:)
+    character(len=32), allocatable :: fields(:)
     integer, allocatable :: ncomps(:)
     character(len=:), allocatable :: path
     character(len=16) :: tag
@@ -289,14 +290,18 @@ contains
       end if
     end do
     ! The fields write_frame writes, in its order.
-    fields = [character(len=16) :: 'displacement', 'velocity', 'reaction']
+    fields = [character(len=32) :: 'displacement', 'velocity', 'reaction']
     ncomps = [2, 2, 2]
     if (out%stress) then
-      fields = [character(len=16) :: fields, 'stress']
+      fields = [character(len=32) :: fields, 'stress']
       ncomps = [ncomps, 4]
       if (model%has_finite) then
-        fields = [character(len=16) :: fields, 'strain']
+        fields = [character(len=32) :: fields, 'strain']
         ncomps = [ncomps, 4]
+      end if
+      if (model%has_plastic) then
+        fields = [character(len=32) :: fields, 'equivalent_plastic_strain', 'yielded']
+        ncomps = [ncomps, 1, 1]
       end if
     end if
     ! A run killed while writing leaves the file marked open for writing
@@ -443,6 +448,9 @@ contains
       end associate
       cols = [cols, extra]
     end do
+    ! With a j2 body: its plastic work, a term of the energy balance
+    ! (last, so that the other columns keep their places).
+    if (model%has_plastic) cols = [cols, [character(len=col_len) :: 'plastic_work']]
   end subroutine history_columns
 
   !> One text file per contact pair, <stem>.contact<k>.txt: a block per
@@ -542,6 +550,7 @@ contains
           real(pairs(k)%nactive, wp), real(pairs(k)%nslip, wp), real(pairs(k)%iterations, wp)]
         col = col + 7
       end do
+      if (model%has_plastic) row(col+1) = e%plastic
     end associate
   end subroutine fill_history_row
 
@@ -572,7 +581,8 @@ contains
       out%wsum = 0.0_wp
       do ib = 1, size(model%bodies)
         do k = 1, size(model%bodies(ib)%blocks)
-          call add_nodal_stress(model%bodies(ib)%blocks(k), state%u, out%s_node, out%wsum)
+          call add_nodal_stress(model%bodies(ib)%blocks(k), state%u, out%s_node, out%wsum, &
+            plastic=state%plastic(k, ib))
         end do
       end do
       do j = 1, model%nnode
@@ -596,6 +606,10 @@ contains
         call results_write_nodal(out%res, 'strain', out%s_node, err)
         if (err%failed()) return
       end if
+      if (model%has_plastic) then
+        call write_plastic_fields(out, model, state, err)
+        if (err%failed()) return
+      end if
     end if
     do k = 1, size(pairs)
       call write_contact_frame(out, k, pairs(k), model, state, err)
@@ -605,6 +619,38 @@ contains
     if (err%failed()) return
     out%frames_written = out%frames_written + 1
   end subroutine write_frame
+
+  !> The j2 bodies' nodal fields (doc/output-format.md):
+  !> equivalent_plastic_strain, the mean over each element's Gauss points
+  !> averaged at the nodes, and yielded, at each node the fraction of its
+  !> elements whose return was plastic in the step to this frame (0 at the
+  !> nodes of other bodies).
+  subroutine write_plastic_fields(out, model, state, err)
+    type(output_t), intent(inout) :: out
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    type(error_t), intent(inout) :: err
+    integer :: ib, k, j
+    out%s_node = 0.0_wp
+    out%r_node = 0.0_wp
+    out%wsum = 0.0_wp
+    do ib = 1, size(model%bodies)
+      do k = 1, size(model%bodies(ib)%blocks)
+        if (model%bodies(ib)%blocks(k)%material /= MAT_J2) cycle
+        call add_nodal_plastic(model%bodies(ib)%blocks(k), state%plastic(k, ib), out%s_node(1:1, :), &
+          out%r_node(1:1, :), out%wsum)
+      end do
+    end do
+    do j = 1, model%nnode
+      if (out%wsum(j) > 0.0_wp) then
+        out%s_node(1, j) = out%s_node(1, j)/out%wsum(j)
+        out%r_node(1, j) = out%r_node(1, j)/out%wsum(j)
+      end if
+    end do
+    call results_write_nodal(out%res, 'equivalent_plastic_strain', out%s_node(1:1, :), err)
+    if (err%failed()) return
+    call results_write_nodal(out%res, 'yielded', out%r_node(1:1, :), err)
+  end subroutine write_plastic_fields
 
   !> Contact profile of pair k at this frame: HDF5 arrays under
   !> /contact/pair_<k>/frame_<n>/ (the slave and master surface grids, and

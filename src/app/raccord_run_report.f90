@@ -8,7 +8,7 @@ module raccord_run_report
   use raccord_strings, only: str
   use raccord_mesh, only: mesh_t, element_name
   use raccord_model, only: model_t
-  use raccord_scene, only: scene_t
+  use raccord_scene, only: scene_t, body_spec_t
   use raccord_state, only: state_t, init_state
   use raccord_time_step, only: time_plan_t
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
@@ -16,7 +16,7 @@ module raccord_run_report
   use raccord_output, only: output_t, wall_seconds
   use raccord_contact_pair, only: contact_pair_t, enforce_contact
   use raccord_scene, only: METHOD_NTS, MULT_P0, MULT_P1, MULT_DUAL
-  use raccord_material, only: KIN_FINITE, kinematics_name, material_name, volumetric_name
+  use raccord_material, only: KIN_FINITE, MAT_J2, kinematics_name, material_name, volumetric_name
   implicit none
   private
 
@@ -70,7 +70,7 @@ contains
           block_types(b) // '), E = ' // str(s%young, 4) // ', nu = ' // str(s%poisson, 3) // &
           ', rho = ' // str(s%density, 4) // ', ' // merge('plane stress', 'plane strain', s%plane_stress) // &
           ', ' // kinematics_name(s%kinematics) // ' strain, ' // material_name(s%material) // &
-          finite_detail(b) // &
+          finite_detail(b) // plastic_detail(s) // &
           ', mass = ' // str(b%mass, 4) // ', sqrt(E/rho) = ' // str(c, 4) // ', damping alpha = ' // &
           str(merge(s%damping, scene%time%damping, s%damping >= 0.0_wp), 4))
       end associate
@@ -158,14 +158,14 @@ contains
     end select
   end function matching_text
 
-  !> ' (Q4 mean_dilatation)' and the like for a finite-strain body's blocks.
+  !> ' (Q4 mean_dilatation)' and the like for a finite-strain or j2 body's blocks.
   function finite_detail(b) result(s)
     use raccord_model, only: body_t
     type(body_t), intent(in) :: b
     character(len=:), allocatable :: s
     integer :: k
     s = ''
-    if (b%blocks(1)%kinematics /= KIN_FINITE) return
+    if (b%blocks(1)%kinematics /= KIN_FINITE .and. b%blocks(1)%material /= MAT_J2) return
     s = ' ('
     do k = 1, size(b%blocks)
       if (k > 1) s = s // ', '
@@ -245,13 +245,21 @@ contains
     t0 = seconds_now(threaded)
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
-        call add_nodal_stress(model%bodies(ib)%blocks(k), scratch%u, s_node, wsum)
+        call add_nodal_stress(model%bodies(ib)%blocks(k), scratch%u, s_node, wsum, plastic=scratch%plastic(k, ib))
       end do
     end do
     t1 = seconds_now(threaded)
     cost%frame = t1 - t0
     call log_set_level(level)
   end function measure_step_cost
+
+  !> ', j2: sigma_y0 = ..., H = ...' for an elastoplastic body, else ''.
+  function plastic_detail(s) result(t)
+    type(body_spec_t), intent(in) :: s
+    character(len=:), allocatable :: t
+    t = ''
+    if (s%material == MAT_J2) t = ', sigma_y0 = ' // str(s%yield_stress, 4) // ', H = ' // str(s%hardening, 4)
+  end function plastic_detail
 
   !> Processor time of this process, or wall time when `wall`.
   real(wp) function seconds_now(wall) result(t)
@@ -290,6 +298,8 @@ contains
       ' (' // str(state%energy%balance/max(state%energy%scale, tiny(1.0_wp)), 3) // ' of the largest energy)')
     if (size(pairs) > 0) call log_info('raccord', 'contact work ' // str(state%energy%contact, 6) // &
       ' (of which friction ' // str(state%energy%friction, 6) // ')')
+    if (model%has_plastic) call log_info('raccord', 'plastic work ' // str(state%energy%plastic, 6) // &
+      ' (j2 bodies: dissipated, and stored by hardening)')
     call system_clock(cnt, rate)
     do k = 1, size(pairs)
       tb = real(pairs(k)%clock_build, wp)/rate

@@ -55,14 +55,18 @@ module raccord_elastic_block
   use raccord_shape, only: shape_quad, node_natural_coords
   use raccord_colouring, only: colour_chunks
   use raccord_material, only: moduli_t, make_moduli, KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, &
-    VOL_FULL, material_name
+    VOL_FULL, VOL_MEAN, MAT_J2, material_name
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
+  use raccord_plasticity, only: j2_t, nhist
+  use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
   implicit none
   private
 
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
+  public :: make_plastic, init_plastic, swap_plastic, watch_dissipation, reports_energy
+  public :: add_nodal_plastic
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = fin_chunk_len
@@ -75,8 +79,10 @@ module raccord_elastic_block
   integer, parameter :: max_group = 32, group_divisor = 64
   integer, parameter :: max_nen = 8, max_gp = 9
   !> The kernel of a block, chosen once (make_finite, init_elastic_block):
-  !> small-strain Q4 split, small-strain Q8, finite strain (Q4 or Q8).
+  !> small-strain Q4 split, small-strain Q8, finite strain (Q4 or Q8),
+  !> J2 plasticity (small or finite strain, Q4 or Q8).
   integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE_Q4 = 3, KERN_FINITE_Q8 = 4
+  integer, parameter :: KERN_J2_SMALL_Q4 = 5, KERN_J2_SMALL_Q8 = 6, KERN_J2_FINITE_Q4 = 7, KERN_J2_FINITE_Q8 = 8
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
   !> M11, M12, M22 (eq. 6.5).
@@ -104,6 +110,7 @@ module raccord_elastic_block
     !> treatment (VOL_FULL, VOL_MEAN) of the block's body (raccord_material)
     integer :: kinematics = KIN_SMALL, material = MAT_LINEAR, volumetric = VOL_FULL
     type(moduli_t) :: moduli
+    type(j2_t) :: j2                     !< yield stress and hardening of a j2 body (make_plastic)
     real(wp) :: density = 0.0_wp         !< reference density rho0 (finite strain: wave speed)
     integer, private :: kernel = 0
     integer, allocatable :: ids(:)       !< mesh element ids (messages), set by the model builder
@@ -147,7 +154,17 @@ module raccord_elastic_block
   type, public :: block_watch_t
     real(wp), allocatable :: energy(:), jmin(:), w2(:)
     integer, allocatable :: jmin_el(:)
+    real(wp), allocatable :: dissip(:)   !< j2 blocks: plastic work of the step per chunk
   end type block_watch_t
+
+  !> The internal variables of a j2 block (raccord_plasticity, nhist per
+  !> Gauss point, chunk-major like the kernel data): old = after the last
+  !> step, new = after the return at the last forces. The caller owns it
+  !> (one per block, in the run's state) and calls swap_plastic once per
+  !> step, when the step's state is final.
+  type, public :: block_plastic_t
+    real(wp), allocatable :: old(:,:,:,:), new(:,:,:,:)   !< (chunk_len, nhist, ngp, nchunk)
+  end type block_plastic_t
 
   !> Element-level work: raccord_elastic_block_element.f90 (a submodule).
   !> q4_detj and add_element_stress, private, are called from this module
@@ -256,6 +273,58 @@ module raccord_elastic_block
       integer, intent(out) :: e
       real(wp), intent(out) :: jmin
     end subroutine watch_inverted
+    !> The reference data of the finite-strain and j2 kernels (pg, cw,
+    !> vol0, diag; raccord_finite_kernel), from the block's geometry.
+    module subroutine init_reference_data(blk, x, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine init_reference_data
+    !> Turn a block set up by init_elastic_block into a J2 elastoplastic
+    !> block (raccord_plastic_kernel, doc/theory-plasticity.md): small or
+    !> finite kinematics, yield stress and hardening j2, volumetric treatment
+    !> (VOL_MEAN or VOL_FULL), reference density. Plane stress is refused
+    !> (EXIT_INPUT).
+    module subroutine make_plastic(blk, x, kinematics, j2, volumetric, density, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      integer, intent(in) :: kinematics, volumetric
+      type(j2_t), intent(in) :: j2
+      real(wp), intent(in) :: density
+      type(error_t), intent(inout) :: err
+    end subroutine make_plastic
+    !> The internal variables of a virgin j2 block (old = new).
+    module subroutine init_plastic(blk, plastic)
+      type(elastic_block_t), intent(in) :: blk
+      type(block_plastic_t), intent(out) :: plastic
+    end subroutine init_plastic
+    !> The step's state is final: new becomes old (no copy, no allocation).
+    module subroutine swap_plastic(plastic)
+      type(block_plastic_t), intent(inout) :: plastic
+    end subroutine swap_plastic
+    !> Plastic work of the last forces' step, summed in chunk order.
+    pure module real(wp) function watch_dissipation(watch) result(w)
+      type(block_watch_t), intent(in) :: watch
+    end function watch_dissipation
+    !> s(1, nnode) += the mean equivalent plastic strain of each element
+    !> after the last return (plastic%new), y(1, nnode) += 1 for the elements
+    !> whose return was plastic at a Gauss point in that step; wsum += 1 per
+    !> element and node.
+    module subroutine add_nodal_plastic(blk, plastic, s, y, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      type(block_plastic_t), intent(in) :: plastic
+      real(wp), intent(inout) :: s(:,:), y(:,:), wsum(:)
+    end subroutine add_nodal_plastic
+    !> The nodal stress contributions of the elements of group grp of a j2
+    !> block (add_nodal_stress): the kernel's Gauss-point stresses
+    !> extrapolated to the nodes.
+    module subroutine add_group_j2_stress(blk, grp, u, plastic, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: grp
+      real(wp), intent(in) :: u(:,:)
+      type(block_plastic_t), intent(in) :: plastic
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_group_j2_stress
   end interface
 
 contains
@@ -528,28 +597,36 @@ contains
   !> first sets the nodes it claimed (claim_first_touch) to zero, so that
   !> over the blocks claimed together f = K u without zeroing f beforehand
   !> (nodes no block claims are left as they are).
-  subroutine add_internal_force(blk, u, f, fresh, watch, monitor)
+  subroutine add_internal_force(blk, u, f, fresh, watch, monitor, plastic)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: f(:,:)
     logical, intent(in), optional :: fresh
-    !> finite strain: per-chunk energy, smallest J and (with monitor) omega^2
+    !> finite strain and j2: per-chunk energy, smallest J, (with monitor)
+    !> omega^2 and plastic work
     type(block_watch_t), intent(inout), optional :: watch
     logical, intent(in), optional :: monitor
-    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rinv, en, jm, w2
+    !> j2 blocks: the internal variables, read from old, written to new
+    !> (required for a j2 block)
+    type(block_plastic_t), intent(inout), optional :: plastic
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rinv, en, jm, w2, dis
+    real(wp) :: sgp(chunk_len, 4, max_gp)
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
-    logical :: reset, mon, watched
+    logical :: reset, mon, watched, mean
     nen = blk%nen
     reset = .false.
     if (present(fresh)) reset = fresh
     mon = .false.
     if (present(monitor)) mon = monitor
     watched = present(watch)
+    mean = blk%volumetric == VOL_MEAN
+    if (blk%material == MAT_J2 .and. .not. present(plastic)) error stop 'add_internal_force: a j2 block needs its plastic state'
     rinv = 0.0_wp
     if (blk%density > 0.0_wp) rinv = 1.0_wp/blk%density
+    dis = 0.0_wp
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, rinv) &
-    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2)
+    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, rinv, plastic, mean) &
+    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
@@ -582,12 +659,29 @@ contains
           case (KERN_FINITE_Q8)
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+          case (KERN_J2_SMALL_Q4)
+            call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
+              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+          case (KERN_J2_SMALL_Q8)
+            call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
+              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+          case (KERN_J2_FINITE_Q4)
+            call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
+              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+          case (KERN_J2_FINITE_Q8)
+            call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
+              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
           end select
-          if (watched .and. blk%kinematics == KIN_FINITE) then
+          if (watched .and. reports_energy(blk)) then
             watch%energy(ic) = en
             watch%jmin(ic) = jm
             watch%jmin_el(ic) = jel
             if (mon) watch%w2(ic) = w2
+            if (blk%material == MAT_J2) watch%dissip(ic) = dis
           end if
           do a = 1, nen
             do i = 1, nc
@@ -716,26 +810,41 @@ contains
     end do gauss
   end subroutine kernel_q8
 
+  !> The block's kernel reports its stored energy (and more) through a
+  !> block_watch_t: finite strain and j2 blocks; the linear blocks' energy
+  !> is 1/2 u' f_int.
+  pure logical function reports_energy(blk)
+    type(elastic_block_t), intent(in) :: blk
+    reports_energy = blk%kinematics == KIN_FINITE .or. blk%material == MAT_J2
+  end function reports_energy
+
   !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
   !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
   !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
   !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
   !> colour order (the same bits for any thread count).
-  subroutine add_nodal_stress(blk, u, s, wsum, strain)
+  subroutine add_nodal_stress(blk, u, s, wsum, strain, plastic)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
     real(wp), intent(inout) :: s(:,:), wsum(:)
     !> the strain instead (small strain, or logarithmic in finite strain)
     logical, intent(in), optional :: strain
+    !> j2 blocks: their internal variables (the stress is the return's from
+    !> plastic%old at u, as at the last forces); required for their stress
+    type(block_plastic_t), intent(in), optional :: plastic
     integer :: col, k, e, e0, e1, what
-    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4
+    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 5
     what = small_stress
     if (present(strain)) then
       if (strain) what = small_strain
     end if
     if (blk%kinematics == KIN_FINITE) what = what + 2
+    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain) then
+      if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
+      what = j2_stress
+    end if
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, s, wsum, what) &
+    !$omp   default(none) shared(blk, u, s, wsum, what, plastic) &
     !$omp   private(col, k, e, e0, e1)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
@@ -758,6 +867,8 @@ contains
           do e = e0, e1
             call add_element_finite(blk, e, u, .true., s, wsum)
           end do
+        case (j2_stress)
+          call add_group_j2_stress(blk, blk%colour_group(k), u, plastic, s, wsum)
         end select
       end do groups
       !$omp end do

@@ -18,10 +18,6 @@ contains
   !> stable step (at F = I both laws have Hooke's tangent).
   module procedure make_finite
     character(len=*), parameter :: where = 'make_finite: '
-    real(wp) :: pq4(4, 4)
-    integer :: e, g, ic, il, stat
-    character(len=256) :: msg
-    real(wp) :: x1(2), x2(2), x3(2), x4(2)
     if (blk%plane_stress) then
       call raise_error(err, EXIT_INPUT, where // 'finite strain is built for plane strain only; ' // &
         'use hypothesis = ''plane_strain'' or kinematics = ''small''')
@@ -42,6 +38,18 @@ contains
     blk%density = density
     blk%moduli = make_moduli(blk%young, blk%poisson)
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
+    call init_reference_data(blk, x, err)
+  end procedure make_finite
+
+  !> The reference data of the finite-strain and j2 kernels: Q4 the exact
+  !> gradient split (q4_split), Q8 J0^-1, and c, V_e and the corner
+  !> diagonals of every element.
+  module procedure init_reference_data
+    character(len=*), parameter :: where = 'init_reference_data: '
+    real(wp) :: pq4(4, 4)
+    integer :: e, g, ic, il, stat
+    character(len=256) :: msg
+    real(wp) :: x1(2), x2(2), x3(2), x4(2)
     allocate(blk%pg(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
       blk%vol0(chunk_len, blk%nchunk), &
       blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
@@ -89,7 +97,7 @@ contains
       blk%diag(il, 1:2, ic) = x3 - x1
       blk%diag(il, 3:4, ic) = x4 - x2
     end do
-  end procedure make_finite
+  end procedure init_reference_data
 
   !> The finite Q4 kernel's reference data of one element (Flanagan and
   !> Belytschko's exact split of the bilinear gradients, theory-elements.md
@@ -128,6 +136,7 @@ contains
   module procedure init_watch
     allocate(watch%energy(blk%nchunk), watch%jmin(blk%nchunk), watch%w2(blk%nchunk), source=0.0_wp)
     allocate(watch%jmin_el(blk%nchunk), source=0)
+    allocate(watch%dissip(blk%nchunk), source=0.0_wp)
     watch%jmin = 1.0_wp
   end procedure init_watch
 
@@ -136,9 +145,15 @@ contains
   module procedure finite_w2_at_rest
     real(wp), allocatable :: u(:,:), f(:,:)
     type(block_watch_t) :: watch
+    type(block_plastic_t) :: plastic
     allocate(u(2, nnode), f(2, nnode), source=0.0_wp)
     call init_watch(blk, watch)
-    call add_internal_force(blk, u, f, watch=watch, monitor=.true.)
+    if (blk%material == MAT_J2) then
+      call init_plastic(blk, plastic)
+      call add_internal_force(blk, u, f, watch=watch, monitor=.true., plastic=plastic)
+    else
+      call add_internal_force(blk, u, f, watch=watch, monitor=.true.)
+    end if
     w2 = watch_w2(watch)
   end procedure finite_w2_at_rest
 

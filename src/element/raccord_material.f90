@@ -26,7 +26,7 @@ module raccord_material
   !> Kinematics of a body (&body kinematics).
   integer, parameter, public :: KIN_SMALL = 1, KIN_FINITE = 2
   !> Materials (&body material).
-  integer, parameter, public :: MAT_LINEAR = 1, MAT_NEO_HOOKE = 2, MAT_SVK = 3
+  integer, parameter, public :: MAT_LINEAR = 1, MAT_NEO_HOOKE = 2, MAT_SVK = 3, MAT_J2 = 4
   !> Volumetric treatment of a finite-strain body (&body volumetric):
   !> full integration, or mean dilatation (one pressure per element).
   integer, parameter, public :: VOL_AUTO = 0, VOL_FULL = 1, VOL_MEAN = 2
@@ -73,6 +73,8 @@ contains
       s = 'neo_hooke'
     case (MAT_SVK)
       s = 'svk'
+    case (MAT_J2)
+      s = 'j2'
     case default
       s = 'linear_elastic'
     end select

@@ -48,7 +48,7 @@ module raccord_plasticity
   integer, parameter, public :: h_xx = 1, h_yy = 2, h_xy = 3, h_zz = 4, h_ebar = 5
   real(wp), parameter :: r23 = 0.816496580927726_wp   ! sqrt(2/3)
 
-  public :: j2_initial_history, j2_return_small, j2_return_hencky
+  public :: j2_initial_history, j2_return_small, j2_return_hencky, j2_small_lanes, j2_hencky_lanes
 
 contains
 
@@ -76,30 +76,14 @@ contains
     real(wp), intent(in) :: eps(4), hold(nhist)
     real(wp), intent(out) :: hnew(nhist), sig(4), we, dwp
     real(wp), intent(in), optional :: theta_bar
-    real(wp) :: th, e(4), s(4), nrm, f, dg, sc, eb
-    e = eps - hold(1:4)
-    th = e(1) + e(2) + e(4)
-    if (present(theta_bar)) th = theta_bar
-    ! deviator of the elastic trial strain (plastic strain is traceless, so
-    ! the trace of eps - eps_p is the trace of eps)
-    s(1) = 2.0_wp*m%g*(e(1) - (e(1) + e(2) + e(4))/3.0_wp)
-    s(2) = 2.0_wp*m%g*(e(2) - (e(1) + e(2) + e(4))/3.0_wp)
-    s(4) = 2.0_wp*m%g*(e(4) - (e(1) + e(2) + e(4))/3.0_wp)
-    s(3) = 2.0_wp*m%g*e(3)
-    nrm = sqrt(s(1)**2 + s(2)**2 + s(4)**2 + 2.0_wp*s(3)**2)
-    f = nrm - r23*(j2%yield0 + j2%hardening*hold(h_ebar))
-    dg = max(f, 0.0_wp)/(2.0_wp*m%g + 2.0_wp*j2%hardening/3.0_wp)
-    sc = dg/max(nrm, tiny(1.0_wp))
-    hnew(1:4) = hold(1:4) + sc*s
-    s = (1.0_wp - 2.0_wp*m%g*sc)*s
-    eb = hold(h_ebar) + r23*dg
-    hnew(h_ebar) = eb
-    sig = s
-    sig(1) = sig(1) + m%k*th
-    sig(2) = sig(2) + m%k*th
-    sig(4) = sig(4) + m%k*th
-    we = 0.5_wp*m%k*th*th + (s(1)**2 + s(2)**2 + s(4)**2 + 2.0_wp*s(3)**2)/(4.0_wp*m%g)
-    dwp = (j2%yield0 + 0.5_wp*j2%hardening*(hold(h_ebar) + eb))*(eb - hold(h_ebar))
+    real(wp) :: tb(1), w1(1), d1(1), hn(1, nhist), s1(1, 4)
+    tb(1) = eps(1) + eps(2) + eps(4)
+    if (present(theta_bar)) tb(1) = theta_bar
+    call j2_small_lanes(1, 1, m, j2, reshape(eps, [1, 4]), tb, reshape(hold, [1, nhist]), hn, s1, w1, d1)
+    hnew = hn(1, :)
+    sig = s1(1, :)
+    we = w1(1)
+    dwp = d1(1)
   end subroutine j2_return_small
 
   !> Finite-strain return (P-4), (P-1)..(P-3), (P-5) at one point, plane
@@ -114,12 +98,96 @@ contains
     real(wp), intent(in) :: f(4), hold(nhist)
     real(wp), intent(out) :: hnew(nhist), tau(4), we, dwp
     real(wp), intent(in), optional :: jbar
-    real(wp) :: b11, b22, b12, b33, mid, rad, rr, cs, sn, l1, l2, e1, e2, e3, tr, d1, d2, d3, nrm
-    real(wp) :: fy, dg, sc, eb, p, t1, t2, j, c11, c22, c12, a1, a2, x11, x22, x12, jb
-    real(wp) :: g11, g21, g12, g22
-    ! (P-4): be_tr = F Cp^-1 F^T (in-plane block), be33 = Cp^-1_33
-    associate (f11 => f(1), f21 => f(2), f12 => f(3), f22 => f(4), q11 => hold(1), q22 => hold(2), &
-        q12 => hold(3))
+    real(wp) :: jb(1), w1(1), d1(1), wm(1), hn(1, nhist), t1(1, 4)
+    jb(1) = 0.0_wp
+    if (present(jbar)) jb(1) = jbar
+    call j2_hencky_lanes(1, 1, m, j2, present(jbar), reshape(f, [1, 4]), jb, reshape(hold, [1, nhist]), &
+      hn, t1, w1, d1, wm)
+    hnew = hn(1, :)
+    tau = t1(1, :)
+    we = w1(1)
+    dwp = d1(1)
+  end subroutine j2_return_hencky
+
+  !> (P-1)..(P-3) on n lanes (leading dimension ld): the form the chunk
+  !> kernels call, one Gauss point of a chunk of elements per call, without
+  !> a branch. eps(:, 4) total strain, tb the volumetric strain to use (its
+  !> own trace, or the element's mean with B-bar).
+  pure subroutine j2_small_lanes(n, ld, m, j2, eps, tb, hold, hnew, sig, we, dwp)
+    integer, intent(in) :: n, ld
+    type(moduli_t), intent(in) :: m
+    type(j2_t), intent(in) :: j2
+    real(wp), intent(in) :: eps(ld, 4), tb(ld), hold(ld, nhist)
+    real(wp), intent(out) :: hnew(ld, nhist), sig(ld, 4), we(ld), dwp(ld)
+    real(wp) :: e1, e2, e3, e4, tr3, s1, s2, s3, s4, nrm, f, dg, sc, eb, th, g2, rh
+    integer :: i
+    g2 = 2.0_wp*m%g
+    rh = 1.0_wp/(g2 + 2.0_wp*j2%hardening/3.0_wp)
+    do i = 1, n
+      e1 = eps(i, 1) - hold(i, 1)
+      e2 = eps(i, 2) - hold(i, 2)
+      e3 = eps(i, 3) - hold(i, 3)
+      e4 = eps(i, 4) - hold(i, 4)
+      th = tb(i)
+      ! deviator of the elastic trial strain (eps_p is traceless)
+      tr3 = (e1 + e2 + e4)/3.0_wp
+      s1 = g2*(e1 - tr3)
+      s2 = g2*(e2 - tr3)
+      s4 = g2*(e4 - tr3)
+      s3 = g2*e3
+      nrm = sqrt(s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)
+      f = nrm - r23*(j2%yield0 + j2%hardening*hold(i, h_ebar))
+      dg = max(f, 0.0_wp)*rh
+      sc = dg/max(nrm, tiny(1.0_wp))
+      hnew(i, 1) = hold(i, 1) + sc*s1
+      hnew(i, 2) = hold(i, 2) + sc*s2
+      hnew(i, 3) = hold(i, 3) + sc*s3
+      hnew(i, 4) = hold(i, 4) + sc*s4
+      sc = 1.0_wp - g2*sc
+      s1 = sc*s1
+      s2 = sc*s2
+      s3 = sc*s3
+      s4 = sc*s4
+      eb = hold(i, h_ebar) + r23*dg
+      hnew(i, h_ebar) = eb
+      sig(i, 1) = s1 + m%k*th
+      sig(i, 2) = s2 + m%k*th
+      sig(i, 3) = s3
+      sig(i, 4) = s4 + m%k*th
+      we(i) = 0.5_wp*m%k*th*th + (s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)/(2.0_wp*g2)
+      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(hold(i, h_ebar) + eb))*(eb - hold(i, h_ebar))
+    end do
+  end subroutine j2_small_lanes
+
+  !> (P-4), (P-1)..(P-3), (P-5) on n lanes. f(:, 4) in-plane F; with mean,
+  !> jb is the element's volume ratio (mean dilatation) and we leaves out
+  !> the volumetric energy. wmod: a bound of the current wave modulus
+  !> (K + 4G/3 + the largest principal |tau|, the elastic moduli: plastic
+  !> flow only softens) for the stable step.
+  pure subroutine j2_hencky_lanes(n, ld, m, j2, mean, f, jb, hold, hnew, tau, we, dwp, wmod)
+    integer, intent(in) :: n, ld
+    type(moduli_t), intent(in) :: m
+    type(j2_t), intent(in) :: j2
+    logical, intent(in) :: mean
+    real(wp), intent(in) :: f(ld, 4), jb(ld), hold(ld, nhist)
+    real(wp), intent(out) :: hnew(ld, nhist), tau(ld, 4), we(ld), dwp(ld), wmod(ld)
+    real(wp) :: f11, f21, f12, f22, q11, q22, q12, g11, g12, g21, g22, b11, b22, b12, b33
+    real(wp) :: mid, rad, rr, cs, sn, e1, e2, e3, tr, d1, d2, d3, nrm, fy, dg, sc, eb, p, t1, t2, t3, j, rj
+    real(wp) :: a1, a2, x11, x22, x12, g2, rh, wvol, pvol, jbi
+    integer :: i
+    g2 = 2.0_wp*m%g
+    rh = 1.0_wp/(g2 + 2.0_wp*j2%hardening/3.0_wp)
+    wvol = merge(0.0_wp, 0.5_wp*m%k, mean)
+    pvol = merge(1.0_wp, 0.0_wp, mean)
+    do i = 1, n
+      f11 = f(i, 1)
+      f21 = f(i, 2)
+      f12 = f(i, 3)
+      f22 = f(i, 4)
+      q11 = hold(i, 1)
+      q22 = hold(i, 2)
+      q12 = hold(i, 3)
+      ! (P-4): be_tr = F Cp^-1 F^T (in-plane block), be33 = Cp^-1_33
       g11 = f11*q11 + f12*q12
       g12 = f11*q12 + f12*q22
       g21 = f21*q11 + f22*q12
@@ -127,68 +195,60 @@ contains
       b11 = g11*f11 + g12*f12
       b22 = g21*f21 + g22*f22
       b12 = g11*f21 + g12*f22
-    end associate
-    b33 = hold(h_zz)
-    ! principal values and the double-angle direction of the in-plane block
-    mid = 0.5_wp*(b11 + b22)
-    rad = sqrt((0.5_wp*(b11 - b22))**2 + b12*b12)
-    rr = max(2.0_wp*rad, tiny(1.0_wp))
-    cs = (b11 - b22)/rr
-    sn = 2.0_wp*b12/rr
-    l1 = mid + rad
-    l2 = max(mid - rad, tiny(1.0_wp))
-    e1 = 0.5_wp*log(l1)
-    e2 = 0.5_wp*log(l2)
-    e3 = 0.5_wp*log(b33)
-    tr = e1 + e2 + e3
-    d1 = e1 - tr/3.0_wp
-    d2 = e2 - tr/3.0_wp
-    d3 = e3 - tr/3.0_wp
-    ! (P-1)..(P-3) on the principal deviator
-    nrm = 2.0_wp*m%g*sqrt(d1*d1 + d2*d2 + d3*d3)
-    fy = nrm - r23*(j2%yield0 + j2%hardening*hold(h_ebar))
-    dg = max(fy, 0.0_wp)/(2.0_wp*m%g + 2.0_wp*j2%hardening/3.0_wp)
-    sc = 1.0_wp - 2.0_wp*m%g*dg/max(nrm, tiny(1.0_wp))
-    d1 = sc*d1
-    d2 = sc*d2
-    d3 = sc*d3
-    eb = hold(h_ebar) + r23*dg
-    j = f(1)*f(4) - f(2)*f(3)
-    if (present(jbar)) then
-      jb = jbar
-      p = m%k*log(jb)*j/jb
-      we = m%g*(d1*d1 + d2*d2 + d3*d3)
-    else
-      p = m%k*tr
-      we = 0.5_wp*m%k*tr*tr + m%g*(d1*d1 + d2*d2 + d3*d3)
-    end if
-    t1 = 2.0_wp*m%g*d1 + p
-    t2 = 2.0_wp*m%g*d2 + p
-    tau(1) = 0.5_wp*(t1 + t2) + 0.5_wp*(t1 - t2)*cs
-    tau(2) = 0.5_wp*(t1 + t2) - 0.5_wp*(t1 - t2)*cs
-    tau(3) = 0.5_wp*(t1 - t2)*sn
-    tau(4) = 2.0_wp*m%g*d3 + p
-    ! (P-5): be = exp(2 eps_e) in the same directions, Cp^-1 = F^-1 be F^-T
-    a1 = exp(2.0_wp*(d1 + tr/3.0_wp))
-    a2 = exp(2.0_wp*(d2 + tr/3.0_wp))
-    x11 = 0.5_wp*(a1 + a2) + 0.5_wp*(a1 - a2)*cs
-    x22 = 0.5_wp*(a1 + a2) - 0.5_wp*(a1 - a2)*cs
-    x12 = 0.5_wp*(a1 - a2)*sn
-    associate (f11 => f(1), f21 => f(2), f12 => f(3), f22 => f(4))
-      ! F^-1 = [[f22, -f12], [-f21, f11]]/J; G = F^-1 be, Cp^-1 = G F^-T
-      g11 = (f22*x11 - f12*x12)/j
-      g12 = (f22*x12 - f12*x22)/j
-      g21 = (f11*x12 - f21*x11)/j
-      g22 = (f11*x22 - f21*x12)/j
-      c11 = (g11*f22 - g12*f12)/j
-      c12 = (g11*(-f21) + g12*f11)/j
-      c22 = (g21*(-f21) + g22*f11)/j
-    end associate
-    hnew(h_xx) = c11
-    hnew(h_yy) = c22
-    hnew(h_xy) = c12
-    hnew(h_zz) = exp(2.0_wp*(d3 + tr/3.0_wp))
-    hnew(h_ebar) = eb
-    dwp = (j2%yield0 + 0.5_wp*j2%hardening*(hold(h_ebar) + eb))*(eb - hold(h_ebar))
-  end subroutine j2_return_hencky
+      b33 = hold(i, 4)
+      ! principal values; (cs, sn) = (cos, sin) of twice the first direction
+      mid = 0.5_wp*(b11 + b22)
+      rad = sqrt((0.5_wp*(b11 - b22))**2 + b12*b12)
+      rr = max(2.0_wp*rad, tiny(1.0_wp))
+      cs = (b11 - b22)/rr
+      sn = 2.0_wp*b12/rr
+      e1 = 0.5_wp*log(mid + rad)
+      e2 = 0.5_wp*log(max(mid - rad, tiny(1.0_wp)))
+      e3 = 0.5_wp*log(b33)
+      tr = e1 + e2 + e3
+      d1 = e1 - tr/3.0_wp
+      d2 = e2 - tr/3.0_wp
+      d3 = e3 - tr/3.0_wp
+      ! (P-1)..(P-3) on the principal deviator
+      nrm = g2*sqrt(d1*d1 + d2*d2 + d3*d3)
+      fy = nrm - r23*(j2%yield0 + j2%hardening*hold(i, h_ebar))
+      dg = max(fy, 0.0_wp)*rh
+      sc = 1.0_wp - g2*dg/max(nrm, tiny(1.0_wp))
+      d1 = sc*d1
+      d2 = sc*d2
+      d3 = sc*d3
+      eb = hold(i, h_ebar) + r23*dg
+      j = f11*f22 - f21*f12
+      ! pressure (Kirchhoff): K tr eps_e, or with mean dilatation K ln(Jbar) J/Jbar
+      ! (jbar is read as 1 without mean dilatation, where its term is off)
+      jbi = pvol*jb(i) + (1.0_wp - pvol)
+      p = (1.0_wp - pvol)*m%k*tr + pvol*m%k*log(jbi)*j/jbi
+      t1 = g2*d1 + p
+      t2 = g2*d2 + p
+      t3 = g2*d3 + p
+      tau(i, 1) = 0.5_wp*(t1 + t2) + 0.5_wp*(t1 - t2)*cs
+      tau(i, 2) = 0.5_wp*(t1 + t2) - 0.5_wp*(t1 - t2)*cs
+      tau(i, 3) = 0.5_wp*(t1 - t2)*sn
+      tau(i, 4) = t3
+      we(i) = wvol*tr*tr + m%g*(d1*d1 + d2*d2 + d3*d3)
+      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(hold(i, h_ebar) + eb))*(eb - hold(i, h_ebar))
+      wmod(i) = m%k + 2.0_wp*g2/3.0_wp + max(abs(t1), abs(t2), abs(t3))
+      ! (P-5): be = exp(2 eps_e) in the same directions, Cp^-1 = F^-1 be F^-T
+      a1 = exp(2.0_wp*(d1 + tr/3.0_wp))
+      a2 = exp(2.0_wp*(d2 + tr/3.0_wp))
+      x11 = 0.5_wp*(a1 + a2) + 0.5_wp*(a1 - a2)*cs
+      x22 = 0.5_wp*(a1 + a2) - 0.5_wp*(a1 - a2)*cs
+      x12 = 0.5_wp*(a1 - a2)*sn
+      rj = 1.0_wp/j
+      g11 = (f22*x11 - f12*x12)*rj
+      g12 = (f22*x12 - f12*x22)*rj
+      g21 = (f11*x12 - f21*x11)*rj
+      g22 = (f11*x22 - f21*x12)*rj
+      hnew(i, 1) = (g11*f22 - g12*f12)*rj
+      hnew(i, 2) = (g22*f11 - g21*f21)*rj
+      hnew(i, 3) = (g12*f11 - g11*f21)*rj
+      hnew(i, 4) = exp(2.0_wp*(d3 + tr/3.0_wp))
+      hnew(i, h_ebar) = eb
+    end do
+  end subroutine j2_hencky_lanes
 end module raccord_plasticity

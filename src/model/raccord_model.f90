@@ -83,7 +83,11 @@ module raccord_model
     !> Some body is finite strain: its stored energy enters the energy
     !> account and the stable step follows its deformation (variable step).
     logical :: has_finite = .false.
-    integer, allocatable :: finite_nodes(:)            !< nodes of finite-strain bodies
+    !> Some body is J2 elastoplastic: its plastic work is a term of the
+    !> energy balance, its internal variables part of the state
+    logical :: has_plastic = .false.
+    !> nodes of finite-strain and j2 bodies (their stored energy replaces 1/2 u' f_int)
+    integer, allocatable :: finite_nodes(:)
   end type model_t
 
 contains

@@ -9,8 +9,9 @@ module raccord_model_build
     find_surface, ELEM_Q4, ELEM_Q8
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
   use raccord_elastic_block, only: init_elastic_block, claim_first_touch, add_lumped_mass, add_body_force, max_eigenvalue_bound, &
-    make_finite, finite_w2_at_rest
-  use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE, VOL_AUTO, VOL_FULL, VOL_MEAN
+    make_finite, finite_w2_at_rest, make_plastic
+  use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE, MAT_J2, VOL_AUTO, VOL_FULL, VOL_MEAN
+  use raccord_plasticity, only: j2_t
   use raccord_edge_load, only: add_edge_traction
   use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t, requested_threads, set_model_threads
   implicit none
@@ -144,7 +145,20 @@ contains
             call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
             return
           end if
-          if (spec%kinematics == KIN_FINITE) then
+          if (spec%material == MAT_J2) then
+            ! The body's kernel: J2 plasticity, small or finite strain, with
+            ! mean dilatation (B-bar) unless the deck says otherwise.
+            vol = spec%volumetric
+            if (vol == VOL_AUTO) vol = VOL_MEAN
+            call make_plastic(body%blocks(nblk), mesh%x, spec%kinematics, j2_t(spec%yield_stress, spec%hardening), &
+              vol, spec%density, err)
+            if (err%failed()) then
+              call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
+              return
+            end if
+            model%has_plastic = .true.
+            if (spec%kinematics == KIN_FINITE) model%has_finite = .true.
+          else if (spec%kinematics == KIN_FINITE) then
             ! The body's kernel: finite strain, its material, and for
             ! neo-Hooke Q4 mean dilatation unless the deck says otherwise.
             vol = spec%volumetric
@@ -187,13 +201,13 @@ contains
     if (nfree > 0) call log_warn('build_model', str(nfree) // ' mesh elements belong to no &body and are ignored')
     allocate(model%minv(mesh%nnode), source=0.0_wp)
     where (model%mass > 0.0_wp) model%minv = 1.0_wp/model%mass
-    ! Nodes of finite-strain bodies: their stored energy replaces 1/2 u' f_int
-    ! in the energy account (raccord_central_difference).
+    ! Nodes of finite-strain and j2 bodies: their stored energy replaces
+    ! 1/2 u' f_int in the energy account (raccord_central_difference).
     block
       logical, allocatable :: fin(:)
       allocate(fin(mesh%nnode), source=.false.)
       do ib = 1, size(model%bodies)
-        if (scene%bodies(ib)%kinematics /= KIN_FINITE) cycle
+        if (scene%bodies(ib)%kinematics /= KIN_FINITE .and. scene%bodies(ib)%material /= MAT_J2) cycle
         fin = fin .or. model%node_body == ib
       end do
       model%finite_nodes = pack([(i, i = 1, mesh%nnode)], fin)

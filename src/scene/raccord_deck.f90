@@ -16,7 +16,7 @@ module raccord_deck
   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, ieee_set_halting_mode, &
     ieee_set_flag, ieee_support_halting
   use raccord_kinds, only: wp, name_len, path_len
-  use raccord_material, only: KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, VOL_AUTO, VOL_FULL, VOL_MEAN
+  use raccord_material, only: KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, MAT_J2, VOL_AUTO, VOL_FULL, VOL_MEAN
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str, lower
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
@@ -42,7 +42,7 @@ module raccord_deck
   character(len=*), parameter :: MESH_KEYS(*) = [character(len=16) :: 'file', 'format', 'scale']
   character(len=*), parameter :: BODY_KEYS(*) = [character(len=16) :: 'name', 'elset', 'young', 'poisson', &
     'density', 'hypothesis', 'thickness', 'velocity', 'body_force', 'damping', 'kinematics', 'material', &
-    'volumetric']
+    'volumetric', 'yield_stress', 'hardening']
   character(len=*), parameter :: BC_KEYS(*) = [character(len=16) :: 'set', 'type', 'components', 'value', &
     'pressure', 'amplitude']
   character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
@@ -284,9 +284,9 @@ contains
     type(body_spec_t), intent(out) :: spec
     type(error_t), intent(inout) :: err
     character(len=name_len) :: name, elset, hypothesis, kinematics, material, volumetric
-    real(wp) :: young, poisson, density, thickness, velocity(2), body_force(2), damping
+    real(wp) :: young, poisson, density, thickness, velocity(2), body_force(2), damping, yield_stress, hardening
     namelist /body/ name, elset, young, poisson, density, hypothesis, thickness, velocity, body_force, damping, &
-      kinematics, material, volumetric
+      kinematics, material, volumetric, yield_stress, hardening
     character(len=:), allocatable :: record, label
     character(len=256) :: msg
     integer :: k, ios
@@ -300,6 +300,8 @@ contains
     kinematics = 'small'
     material = 'linear_elastic'
     volumetric = 'auto'
+    yield_stress = UNSET
+    hardening = UNSET
     thickness = spec%thickness
     velocity = spec%velocity
     body_force = spec%body_force
@@ -325,9 +327,9 @@ contains
     end do
     call check_length(deck, blk, label, 'name', name, err)
     call check_length(deck, blk, label, 'elset', elset, err)
-    call check_finite(deck, blk, label, [character(len=10) :: 'young', 'poisson', 'density', 'thickness', &
-      'velocity', 'velocity', 'body_force', 'body_force', 'damping'], &
-      [young, poisson, density, thickness, velocity, body_force, damping], err)
+    call check_finite(deck, blk, label, [character(len=12) :: 'young', 'poisson', 'density', 'thickness', &
+      'velocity', 'velocity', 'body_force', 'body_force', 'damping', 'yield_stress', 'hardening'], &
+      [young, poisson, density, thickness, velocity, body_force, damping, yield_stress, hardening], err)
     if (err%failed()) return
 
     if (len_trim(name) == 0) then
@@ -368,6 +370,8 @@ contains
       return
     end select
     call read_constitution(deck, blk, label, lower(kinematics), lower(material), lower(volumetric), spec, err)
+    if (err%failed()) return
+    call read_plastic(deck, blk, label, yield_stress, hardening, spec, err)
     if (err%failed()) return
 
     spec%name = trim(name)
@@ -412,9 +416,12 @@ contains
       spec%material = MAT_NEO_HOOKE
     case ('svk')
       spec%material = MAT_SVK
+    case ('j2')
+      spec%material = MAT_J2
     case default
       call bad_value(deck, blk, label, 'material', 'unknown material ''' // trim(material) // '''', &
-        'use ''linear_elastic'' (small strain), ''neo_hooke'' or ''svk'' (finite strain)', err)
+        'use ''linear_elastic'' (small strain), ''neo_hooke'' or ''svk'' (finite strain), or ''j2'' ' // &
+        '(von Mises plasticity, small or finite strain)', err)
       return
     end select
     select case (volumetric)
@@ -434,21 +441,58 @@ contains
       call bad_value(deck, blk, label, 'kinematics', 'finite strain needs a hyperelastic material, ' // &
         'and material is ''linear_elastic''', 'write material = ''neo_hooke'' (or ''svk'') beside ' // &
         'kinematics = ''finite'', or kinematics = ''small'' for Hooke''s law', err)
-    else if (spec%kinematics == KIN_SMALL .and. spec%material /= MAT_LINEAR) then
+    else if (spec%material == MAT_J2 .and. spec%plane_stress) then
+      call bad_value(deck, blk, label, 'hypothesis', 'J2 plasticity is built for plane strain only', &
+        'write hypothesis = ''plane_strain'' for an elastoplastic body', err)
+    else if (spec%kinematics == KIN_SMALL .and. spec%material /= MAT_LINEAR .and. spec%material /= MAT_J2) then
       call bad_value(deck, blk, label, 'material', 'material ''' // trim(material) // ''' is a finite-strain law ' // &
         'and kinematics is ''small''', 'write kinematics = ''finite'' beside material = ''' // trim(material) // &
         ''', or material = ''linear_elastic'' for small strain', err)
     else if (spec%kinematics == KIN_FINITE .and. spec%plane_stress) then
       call bad_value(deck, blk, label, 'hypothesis', 'finite strain is built for plane strain only', &
         'write hypothesis = ''plane_strain'', or kinematics = ''small'' for a plane-stress body', err)
-    else if (spec%kinematics == KIN_SMALL .and. spec%volumetric /= VOL_AUTO) then
-      call bad_value(deck, blk, label, 'volumetric', 'the volumetric treatment is a finite-strain option', &
-        'leave volumetric out for a small-strain body', err)
+    else if (spec%kinematics == KIN_SMALL .and. spec%material /= MAT_J2 .and. spec%volumetric /= VOL_AUTO) then
+      call bad_value(deck, blk, label, 'volumetric', 'the volumetric treatment is a finite-strain option ' // &
+        '(and a j2 one)', 'leave volumetric out for a small-strain elastic body', err)
     else if (spec%material == MAT_SVK .and. spec%volumetric == VOL_MEAN) then
       call bad_value(deck, blk, label, 'volumetric', 'mean dilatation is built for neo_hooke only', &
         'write volumetric = ''full'' (or leave it out) for an svk body', err)
     end if
   end subroutine read_constitution
+
+  !> &body yield_stress and hardening: required (yield_stress) and allowed
+  !> only with material = 'j2' (doc/theory-plasticity.md).
+  subroutine read_plastic(deck, blk, label, yield_stress, hardening, spec, err)
+    character(len=*), intent(in) :: deck, label
+    type(deck_block_t), intent(in) :: blk
+    real(wp), intent(in) :: yield_stress, hardening
+    type(body_spec_t), intent(inout) :: spec
+    type(error_t), intent(inout) :: err
+    if (spec%material /= MAT_J2) then
+      if (yield_stress /= UNSET) then
+        call bad_value(deck, blk, label, 'yield_stress', 'yield_stress is a key of material = ''j2''', &
+          'write material = ''j2'' for an elastoplastic body, or leave yield_stress out', err)
+      else if (hardening /= UNSET) then
+        call bad_value(deck, blk, label, 'hardening', 'hardening is a key of material = ''j2''', &
+          'write material = ''j2'' for an elastoplastic body, or leave hardening out', err)
+      end if
+      return
+    end if
+    if (yield_stress == UNSET) then
+      call missing_key(deck, blk, label, 'yield_stress', 'yield_stress = <initial yield stress>, e.g. 240.0 (MPa)', err)
+    else if (.not. (yield_stress > 0.0_wp)) then
+      call bad_value(deck, blk, label, 'yield_stress', 'the yield stress must be > 0', &
+        'give the initial (von Mises) yield stress in stress units, e.g. yield_stress = 240.0', err)
+    else if (hardening /= UNSET .and. .not. (hardening >= 0.0_wp)) then
+      call bad_value(deck, blk, label, 'hardening', 'the hardening modulus must be >= 0 (softening is not built)', &
+        'give the slope H of yield stress against equivalent plastic strain, e.g. hardening = 2000.0, ' // &
+        'or 0 (the default) for perfect plasticity', err)
+    end if
+    if (err%failed()) return
+    spec%yield_stress = yield_stress
+    spec%hardening = 0.0_wp
+    if (hardening /= UNSET) spec%hardening = hardening
+  end subroutine read_plastic
 
   !> &boundary set, type, components, value, pressure, amplitude.
   subroutine read_boundary(deck, blk, spec, err)

@@ -9,7 +9,7 @@ module raccord_deck_write
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_IO
   use raccord_strings, only: str
-  use raccord_material, only: KIN_FINITE, kinematics_name, material_name, volumetric_name
+  use raccord_material, only: KIN_FINITE, MAT_J2, kinematics_name, material_name, volumetric_name
   use raccord_scene, only: scene_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE, &
     METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0, MULT_DUAL
   implicit none
@@ -66,7 +66,12 @@ contains
           end if
           call put_text(unit, 'kinematics', kinematics_name(b%kinematics), ios, msg)
           call put_text(unit, 'material', material_name(b%material), ios, msg)
-          if (b%kinematics == KIN_FINITE) call put_text(unit, 'volumetric', volumetric_name(b%volumetric), ios, msg)
+          if (b%kinematics == KIN_FINITE .or. b%material == MAT_J2) &
+            call put_text(unit, 'volumetric', volumetric_name(b%volumetric), ios, msg)
+          if (b%material == MAT_J2) then
+            call put(unit, '  yield_stress = ' // real_text(b%yield_stress), ios, msg)
+            call put(unit, '  hardening = ' // real_text(b%hardening), ios, msg)
+          end if
           call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
           call put(unit, '  velocity = ' // reals_text(b%velocity), ios, msg)
           call put(unit, '  body_force = ' // reals_text(b%body_force), ios, msg)

@@ -40,8 +40,10 @@ module raccord_scene
     real(wp) :: density = 0.0_wp                    !< rho [mass/length^3]
     logical :: plane_stress = .false.               !< hypothesis = 'plane_stress' (default plane strain)
     integer :: kinematics = KIN_SMALL               !< kinematics = 'small' | 'finite' (raccord_material)
-    integer :: material = MAT_LINEAR                !< material = 'linear_elastic' | 'neo_hooke' | 'svk'
+    integer :: material = MAT_LINEAR                !< material = 'linear_elastic' | 'neo_hooke' | 'svk' | 'j2'
     integer :: volumetric = VOL_AUTO                !< volumetric = 'auto' | 'full' | 'mean_dilatation'
+    real(wp) :: yield_stress = 0.0_wp               !< material = 'j2': initial yield stress [stress]
+    real(wp) :: hardening = 0.0_wp                  !< material = 'j2': linear isotropic hardening H [stress]
     real(wp) :: thickness = 1.0_wp                  !< out-of-plane thickness [length]
     real(wp) :: velocity(2) = 0.0_wp                !< initial velocity [length/time]
     real(wp) :: body_force(2) = 0.0_wp              !< force per unit volume [force/length^3]

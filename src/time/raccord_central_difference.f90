@@ -25,8 +25,8 @@ module raccord_central_difference
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t, amplitude_at
   use raccord_state, only: state_t
-  use raccord_elastic_block, only: add_internal_force, watch_energy
-  use raccord_material, only: KIN_FINITE
+  use raccord_elastic_block, only: add_internal_force, watch_energy, watch_dissipation, reports_energy, swap_plastic
+  use raccord_material, only: KIN_FINITE, MAT_J2
   implicit none
   private
 
@@ -65,7 +65,13 @@ contains
 
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
-        if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) then
+        if (model%bodies(ib)%blocks(k)%material == MAT_J2) then
+          ! j2: the return from the last step's internal variables, its
+          ! stored energy and plastic work (finite strain: smallest J and step)
+          call add_internal_force(model%bodies(ib)%blocks(k), state%u, state%f_int, fresh=.true., &
+            watch=state%watch(k, ib), monitor=model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE, &
+            plastic=state%plastic(k, ib))
+        else if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) then
           ! finite strain: also its stored energy, smallest J and stable-step estimate
           call add_internal_force(model%bodies(ib)%blocks(k), state%u, state%f_int, fresh=.true., &
             watch=state%watch(k, ib), monitor=.true.)
@@ -155,7 +161,7 @@ contains
       ! the nodes it moves.
       state%energy%discrete = 0.5_wp*(kh + cross)
     end associate
-    if (model%has_finite) call finite_energy(model, state)
+    if (model%has_finite .or. model%has_plastic) call finite_energy(model, state)
     if (model%has_damping) then
       ! Dissipation of the semi-implicit damping term over the step:
       ! alpha h v' M v with v the mean of the two half-step velocities
@@ -256,8 +262,10 @@ contains
     end do
   end subroutine predict_constrained
 
-  !> Finite-strain bodies (doc/theory-finite.md, "Energy"): their stored
-  !> energy W(u(n)) = sum_g W(F) c replaces 1/2 u(n)' f_int(n), and (E-1)
+  !> Finite-strain and j2 bodies (doc/theory-finite.md, "Energy";
+  !> doc/theory-plasticity.md): their stored (elastic) energy W(u(n)) =
+  !> sum_g W(F) c replaces 1/2 u(n)' f_int(n), the plastic work of the j2
+  !> bodies' returns at u(n) is added to its own term, and (E-1)
   !> becomes H(n+1/2) = 1/2 v' M v + W(u(n)) + 1/2 f_int(n)' (u(n+1) - u(n)),
   !> which is (E-1) itself for a linear body. Its change over a step is the
   !> work of the forces up to the trapezoidal error of integrating W along
@@ -265,14 +273,17 @@ contains
   subroutine finite_energy(model, state)
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
-    real(wp) :: w, ie
+    real(wp) :: w, ie, wpl
     integer :: ib, k, j, i
     w = 0.0_wp
+    wpl = 0.0_wp
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
-        if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) w = w + watch_energy(state%watch(k, ib))
+        if (reports_energy(model%bodies(ib)%blocks(k))) w = w + watch_energy(state%watch(k, ib))
+        if (model%bodies(ib)%blocks(k)%material == MAT_J2) wpl = wpl + watch_dissipation(state%watch(k, ib))
       end do
     end do
+    state%energy%plastic = state%energy%plastic + wpl
     ie = 0.0_wp
     do j = 1, size(model%finite_nodes)
       i = model%finite_nodes(j)
@@ -354,11 +365,11 @@ contains
     associate (e => state%energy)
       e%external = e%external + w
       if (state%step == 0) e%initial = e%kinetic
-      e%balance = e%discrete + e%damping + e%contact - e%external - e%initial
+      e%balance = e%discrete + e%damping + e%contact + e%plastic - e%external - e%initial
       ! Every term of the balance sets the scale, so that a step-0 contact
       ! correction on bodies at rest has a scale to be relative to.
       e%scale = max(e%scale, abs(e%kinetic), abs(e%internal), abs(e%external), abs(e%initial), &
-        abs(e%discrete), abs(e%contact), abs(e%damping))
+        abs(e%discrete), abs(e%contact), abs(e%damping), abs(e%plastic))
     end associate
   end subroutine update_energy
 
@@ -379,10 +390,19 @@ contains
   subroutine advance_state(state)
     type(state_t), intent(inout) :: state
     real(wp), allocatable :: spare(:,:)
+    integer :: ib, k
     call move_alloc(state%u_prev, spare)
     call move_alloc(state%u, state%u_prev)
     call move_alloc(state%u_next, state%u)
     call move_alloc(spare, state%u_next)
+    ! j2 bodies: the returns at u(n) are final
+    if (allocated(state%plastic)) then
+      do ib = 1, size(state%plastic, 2)
+        do k = 1, size(state%plastic, 1)
+          if (allocated(state%plastic(k, ib)%old)) call swap_plastic(state%plastic(k, ib))
+        end do
+      end do
+    end if
     state%step = state%step + 1_i8
     if (state%adaptive) then
       state%time = state%time + state%dt

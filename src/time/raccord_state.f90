@@ -2,8 +2,8 @@
 module raccord_state
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t
-  use raccord_elastic_block, only: block_watch_t, init_watch
-  use raccord_material, only: KIN_FINITE
+  use raccord_elastic_block, only: block_watch_t, init_watch, block_plastic_t, init_plastic, reports_energy
+  use raccord_material, only: MAT_J2
   implicit none
   private
 
@@ -26,8 +26,9 @@ module raccord_state
     real(wp) :: damping = 0.0_wp          !< dissipated by mass-proportional damping
     real(wp) :: contact = 0.0_wp          !< work done against contact forces (normal + friction)
     real(wp) :: friction = 0.0_wp         !< of which dissipated by friction
+    real(wp) :: plastic = 0.0_wp          !< plastic work of the j2 bodies (dissipated + stored by hardening)
     real(wp) :: initial = 0.0_wp          !< kinetic energy at t = 0 (u(0) = 0)
-    real(wp) :: balance = 0.0_wp          !< discrete + damping + contact - external - initial
+    real(wp) :: balance = 0.0_wp          !< discrete + damping + contact + plastic - external - initial
     real(wp) :: scale = 0.0_wp            !< largest energy magnitude seen (for the relative error)
   end type energy_t
 
@@ -57,6 +58,9 @@ module raccord_state
     !> forces (stored energy, smallest J, omega^2 estimate); unallocated
     !> arrays for small-strain blocks
     type(block_watch_t), allocatable :: watch(:,:)
+    !> (block, body): the internal variables of each j2 block (unallocated
+    !> arrays for the other blocks)
+    type(block_plastic_t), allocatable :: plastic(:,:)
   end type state_t
 
   public :: init_state
@@ -84,11 +88,13 @@ contains
     state%dt_plan = dt
     state%t_end = real(nsteps, wp)*dt
     state%adaptive = model%has_finite
-    allocate(state%watch(2, size(model%bodies)))
+    allocate(state%watch(2, size(model%bodies)), state%plastic(2, size(model%bodies)))
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
-        if (model%bodies(ib)%blocks(k)%kinematics == KIN_FINITE) &
+        if (reports_energy(model%bodies(ib)%blocks(k))) &
           call init_watch(model%bodies(ib)%blocks(k), state%watch(k, ib))
+        if (model%bodies(ib)%blocks(k)%material == MAT_J2) &
+          call init_plastic(model%bodies(ib)%blocks(k), state%plastic(k, ib))
       end do
     end do
   end subroutine init_state

@@ -1,0 +1,144 @@
+!> J2 elastoplastic blocks (raccord_elastic_block; doc/theory-plasticity.md):
+!> the set-up of the block's kernel, its internal variables, the plastic
+!> work the kernel reports and the plastic outputs. The procedures the
+!> parent declares are defined here with `module procedure`.
+submodule (raccord_elastic_block) raccord_elastic_block_plastic
+  use raccord_plasticity, only: j2_initial_history, h_ebar
+  implicit none
+
+contains
+
+  !> Turn a block into a J2 block: the kernel of its kinematics and element
+  !> type, and the reference data it shares with the finite-strain kernels.
+  module procedure make_plastic
+    character(len=*), parameter :: where = 'make_plastic: '
+    if (blk%plane_stress) then
+      call raise_error(err, EXIT_INPUT, where // 'J2 plasticity is built for plane strain only; ' // &
+        'use hypothesis = ''plane_strain''')
+      return
+    end if
+    if (.not. (j2%yield0 > 0.0_wp) .or. .not. (j2%hardening >= 0.0_wp)) then
+      call raise_error(err, EXIT_INPUT, where // 'the yield stress must be > 0 and the hardening >= 0, got ' // &
+        str(j2%yield0) // ' and ' // str(j2%hardening))
+      return
+    end if
+    if (.not. (density > 0.0_wp)) then
+      call raise_error(err, EXIT_INPUT, where // 'the density must be > 0, got ' // str(density))
+      return
+    end if
+    blk%kinematics = kinematics
+    blk%material = MAT_J2
+    blk%volumetric = volumetric
+    blk%density = density
+    blk%j2 = j2
+    blk%moduli = make_moduli(blk%young, blk%poisson)
+    if (kinematics == KIN_FINITE) then
+      blk%kernel = merge(KERN_J2_FINITE_Q4, KERN_J2_FINITE_Q8, blk%etype == ELEM_Q4)
+    else
+      blk%kernel = merge(KERN_J2_SMALL_Q4, KERN_J2_SMALL_Q8, blk%etype == ELEM_Q4)
+    end if
+    call init_reference_data(blk, x, err)
+  end procedure make_plastic
+
+  !> A virgin block: eps_p = 0 or Cp^-1 = I, ebar = 0 at every point.
+  module procedure init_plastic
+    real(wp) :: h0(nhist)
+    integer :: v
+    allocate(plastic%old(chunk_len, nhist, blk%ngp, blk%nchunk))
+    h0 = j2_initial_history(blk%kinematics == KIN_FINITE)
+    do v = 1, nhist
+      plastic%old(:, v, :, :) = h0(v)
+    end do
+    plastic%new = plastic%old
+  end procedure init_plastic
+
+  module procedure swap_plastic
+    real(wp), allocatable :: spare(:,:,:,:)
+    call move_alloc(plastic%old, spare)
+    call move_alloc(plastic%new, plastic%old)
+    call move_alloc(spare, plastic%new)
+  end procedure swap_plastic
+
+  module procedure watch_dissipation
+    integer :: k
+    w = 0.0_wp
+    if (.not. allocated(watch%dissip)) return
+    do k = 1, size(watch%dissip)
+      w = w + watch%dissip(k)
+    end do
+  end procedure watch_dissipation
+
+  module procedure add_nodal_plastic
+    integer :: e, ic, il, a, node
+    real(wp) :: eb, act
+    do e = 1, blk%nel
+      ic = (e - 1)/chunk_len + 1
+      il = e - (ic - 1)*chunk_len
+      eb = sum(plastic%new(il, h_ebar, :, ic))/real(blk%ngp, wp)
+      act = merge(1.0_wp, 0.0_wp, any(plastic%new(il, h_ebar, :, ic) > plastic%old(il, h_ebar, :, ic)))
+      do a = 1, blk%nen
+        node = blk%conn(a, e)
+        s(1, node) = s(1, node) + eb
+        y(1, node) = y(1, node) + act
+        wsum(node) = wsum(node) + 1.0_wp
+      end do
+    end do
+  end procedure add_nodal_plastic
+
+  !> The group's chunks through the kernel (from plastic%old into a scratch
+  !> state, so the run's state is untouched), then each element's
+  !> Gauss-point stresses extrapolated to its nodes (theory eq. 7.1).
+  module procedure add_group_j2_stress
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), sgp(chunk_len, 4, max_gp)
+    real(wp) :: hnew(chunk_len, nhist, max_gp), en, dis, jm, w2, rinv
+    integer :: ic, e0, nc, i, a, node, jel, g, ngp
+    logical :: mean
+    mean = blk%volumetric == VOL_MEAN
+    ngp = blk%ngp
+    rinv = 1.0_wp/blk%density
+    do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
+      e0 = (ic - 1)*chunk_len
+      nc = min(chunk_len, blk%nel - e0)
+      do a = 1, blk%nen
+        do i = 1, nc
+          node = blk%conn(a, e0 + i)
+          ue(i, :, a) = u(:, node)
+        end do
+      end do
+      select case (blk%kernel)
+      case (KERN_J2_SMALL_Q4)
+        call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
+          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+      case (KERN_J2_SMALL_Q8)
+        call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
+          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+      case (KERN_J2_FINITE_Q4)
+        call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
+          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+      case (KERN_J2_FINITE_Q8)
+        call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
+          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+      end select
+      ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)
+      call extrapolate(reshape(sgp(:, :, 1:ngp), [chunk_len, 4, ngp]))
+    end do
+  contains
+    subroutine extrapolate(sg)
+      real(wp), intent(in) :: sg(:,:,:)
+      integer :: ii, aa, gg
+      do ii = 1, nc
+        do aa = 1, blk%nen
+          node = blk%conn(aa, e0 + ii)
+          do gg = 1, ngp
+            s(:, node) = s(:, node) + blk%extrap(aa, gg)*sg(ii, :, gg)
+          end do
+          wsum(node) = wsum(node) + 1.0_wp
+        end do
+      end do
+    end subroutine extrapolate
+  end procedure add_group_j2_stress
+end submodule raccord_elastic_block_plastic

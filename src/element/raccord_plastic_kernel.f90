@@ -1,0 +1,77 @@
+!> Internal force of J2 elastoplastic elements (doc/theory-plasticity.md),
+!> one chunk of elements at a time, small or finite strain, Q4 or Q8.
+!>
+!> The gradient at every Gauss point and the assembly of the forces are
+!> those of the finite-strain kernel ((F-1), (F-2) of raccord_finite_kernel;
+!> Q4 with the exact gradient split): only the stress differs. It comes from
+!> the return map of raccord_plasticity, on one Gauss point of the whole
+!> chunk per call, from the internal variables of the last step (hold) into
+!> hnew; the caller keeps both and swaps them once per step, so computing
+!> the forces of one state twice gives the same result.
+!>
+!> Volumetric treatment (volumetric = 'mean_dilatation', the default for
+!> j2): plastic flow is isochoric, so a fully integrated Q4 (and Q8) would
+!> lock in fully plastic flow. The pressure is taken on the element's mean
+!> volume change:
+!>  - small strain, B-bar: theta_bar = sum_g c_g tr(eps_g) / V_e replaces
+!>    tr(eps) at every point, sigma_g = s_g + K theta_bar I, and
+!>    f = sum_g c_g B_g^T sigma_g is the gradient of sum_g c_g W_e;       (J-1)
+!>  - finite strain, mean dilatation as for neo-Hooke (F-3): Jbar =
+!>    sum_g c_g J_g / V_e, tau_g = 2G dev eps_e,g + K ln(Jbar) (J_g/Jbar) I,
+!>    the volumetric energy V_e (K/2) ln(Jbar)^2.                         (J-2)
+!> volumetric = 'full' keeps each point's own trace (for comparison).
+!>
+!> Per chunk the kernel reports the elastic energy sum c W_e, the plastic
+!> work of the step sum c dW_p (P-6, P-7), and in finite strain the
+!> smallest J and, with monitor, the largest omega^2 estimate.
+module raccord_plastic_kernel
+  use raccord_kinds, only: wp
+  use raccord_material, only: moduli_t
+  use raccord_plasticity, only: j2_t, nhist, j2_small_lanes, j2_hencky_lanes
+  use raccord_finite_kernel, only: fin_chunk_len, q4h_row, q4h_col
+  implicit none
+  private
+
+  public :: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
+
+  integer, parameter :: max_nen = 8, max_gp = 9
+
+contains
+
+  !> fe = internal forces of nc J2 elements of a chunk; sg = Cauchy stress
+  !> (xx, yy, xy, zz) at every Gauss point; hnew = the internal variables
+  !> after this state's return from hold; energy = sum c W_e, dissip = sum c
+  !> dW_p; jmin/jmin_el/w2 as the finite kernel (jmin = 1 in small strain).
+  !> The other arguments are those of kernel_finite_q4.
+  pure subroutine kernel_j2_small_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
+      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+    integer, parameter :: nen = 4, ngp = 4
+    real(wp), parameter :: lfac = 1.0_wp
+    logical, parameter :: split = .true., finite = .false.
+    include 'raccord_plastic_kernel_body.inc'
+  end subroutine kernel_j2_small_q4
+
+  pure subroutine kernel_j2_small_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
+      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+    integer, parameter :: nen = 8, ngp = 9
+    real(wp), parameter :: lfac = 0.3_wp
+    logical, parameter :: split = .false., finite = .false.
+    include 'raccord_plastic_kernel_body.inc'
+  end subroutine kernel_j2_small_q8
+
+  pure subroutine kernel_j2_finite_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
+      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+    integer, parameter :: nen = 4, ngp = 4
+    real(wp), parameter :: lfac = 1.0_wp
+    logical, parameter :: split = .true., finite = .true.
+    include 'raccord_plastic_kernel_body.inc'
+  end subroutine kernel_j2_finite_q4
+
+  pure subroutine kernel_j2_finite_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
+      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+    integer, parameter :: nen = 8, ngp = 9
+    real(wp), parameter :: lfac = 0.3_wp
+    logical, parameter :: split = .false., finite = .true.
+    include 'raccord_plastic_kernel_body.inc'
+  end subroutine kernel_j2_finite_q8
+end module raccord_plastic_kernel

@@ -1,0 +1,177 @@
+#!/bin/sh
+# The program with J2 elastoplastic bodies (material = 'j2').
+# usage: plastic_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
+# CASE        refuse, outputs, restart
+# refuse      j2 keys without j2, j2 without yield_stress, bad values and
+#             plane stress exit 2 before anything is written, naming the key
+# outputs     the plan names the material; the results carry
+#             equivalent_plastic_strain and yielded, the history plastic_work
+# restart     a j2 slider (finite strain) pressed and dragged on a steel
+#             base with friction, stopped by SIGUSR1 in mid-run and restarted:
+#             its results equal the continuous run's bit for bit
+# Needs sh, awk, cmp, h5dump and h5diff (hdf5-tools); 77 = skipped.
+set -u
+
+case_name=$1
+raccord=$2
+src=$3
+work=$4
+
+npass=0
+nfail=0
+pass() { npass=$((npass + 1)); echo "ok   [$case_name] $*"; }
+fail() { nfail=$((nfail + 1)); echo "FAIL [$case_name] $*"; }
+check() { # description command...
+  what=$1
+  shift
+  if "$@"; then pass "$what"; else fail "$what"; fi
+}
+finish() {
+  echo "$npass passed, $nfail failed"
+  [ "$nfail" -eq 0 ]
+  exit $?
+}
+has() { grep -qF -- "$2" "$1"; }
+
+for tool in h5dump h5diff h5ls; do
+  command -v "$tool" > /dev/null 2>&1 || { echo "skipped: $tool (hdf5-tools) not found"; exit 77; }
+done
+rm -rf "$work"
+mkdir -p "$work" || exit 1
+cd "$work" || exit 1
+export GFORTRAN_ERROR_BACKTRACE=0
+unset RACCORD_WALLCLOCK_SECONDS
+
+# block DECK BODY_KEYS: the unit block of tests/finite/data, steel-like,
+# bottom held in y, sides in x, top driven down 1 % and back.
+block() {
+  cat > "$1" <<EOD
+&mesh file = '$src/tests/finite/data/block.msh' /
+&body name = 'block', young = 210000.0, poisson = 0.3, density = 7.8e-9, $2 /
+&amplitude name = 'cycle', time = 0.0, 2.0e-5, 4.0e-5, value = 0.0, 1.0, 0.0 /
+&boundary set = 'bottom', type = 'fixed', components = 'y' /
+&boundary set = 'left', type = 'fixed', components = 'x' /
+&boundary set = 'right', type = 'fixed', components = 'x' /
+&boundary set = 'top', type = 'displacement', components = 'y', value = 0.0, -0.01, amplitude = 'cycle' /
+&time t_end = 4.0e-5, damping = 5.0e6 /
+&output frames = 4 /
+EOD
+}
+
+# refused NAME BODY_KEYS TEXT...: exit 2, stderr names the body and each TEXT, no file written.
+refused() {
+  name=$1
+  keys=$2
+  shift 2
+  mkdir -p "$name"
+  block "$name/deck.nml" "$keys"
+  "$raccord" -o "$name/out" "$name/deck.nml" > "$name/stdout.txt" 2> "$name/stderr.txt"
+  code=$?
+  check "$name: exit 2 (got $code)" test "$code" -eq 2
+  check "$name: the message names the body" has "$name/stderr.txt" "&body 'block'"
+  for t in "$@"; do
+    check "$name: the message says '$t'" has "$name/stderr.txt" "$t"
+  done
+  check "$name: no Fortran runtime message or backtrace" sh -c "! grep -qiE 'backtrace|fortran runtime|error stop' '$name/stderr.txt'"
+  check "$name: nothing written" test ! -e "$name/out"
+}
+
+case "$case_name" in
+refuse)
+  refused yield_without_j2 "yield_stress = 240.0" "yield_stress is a key of material = 'j2'" "material = 'j2'"
+  refused hardening_without_j2 "kinematics = 'finite', material = 'neo_hooke', hardening = 10.0" \
+    "hardening is a key of material = 'j2'"
+  refused j2_without_yield "material = 'j2'" "yield_stress" "yield_stress = <initial yield stress>"
+  refused j2_zero_yield "material = 'j2', yield_stress = 0.0" "the yield stress must be > 0"
+  refused j2_softening "material = 'j2', yield_stress = 240.0, hardening = -100.0" "hardening modulus must be >= 0"
+  refused j2_plane_stress "material = 'j2', yield_stress = 240.0, hypothesis = 'plane_stress'" \
+    "plane strain only" "hypothesis = 'plane_strain'"
+  refused j2_bad_volumetric "material = 'j2', yield_stress = 240.0, volumetric = 'reduced'" \
+    "unknown volumetric treatment 'reduced'"
+  ;;
+outputs)
+  block ok.nml "material = 'j2', yield_stress = 240.0, hardening = 2000.0"
+  "$raccord" --check ok.nml > check.txt 2>&1
+  code=$?
+  check "--check of a j2 body: exit 0 (got $code)" test "$code" -eq 0
+  check "--check names the material, its yield stress and the Q4 treatment" has check.txt \
+    "small strain, j2 (Q4 mean_dilatation), sigma_y0 = 240"
+  check "--check writes the keys back" has check.txt "yield_stress = 240"
+  "$raccord" -q -o out ok.nml > run.txt 2>&1
+  code=$?
+  check "run: exit 0 (got $code)" test "$code" -eq 0
+  [ "$code" -eq 0 ] || { cat run.txt; finish; }
+  check "the history has a plastic_work column" has out/ok.history.txt "plastic_work"
+  check "the log reports the plastic work" has out/ok.log "plastic work"
+  h5ls -r out/ok.h5 > h5ls.txt
+  check "frames carry equivalent_plastic_strain" has h5ls.txt "/frames/000004/equivalent_plastic_strain"
+  check "frames carry yielded" has h5ls.txt "/frames/000004/yielded"
+  check "the XDMF shows equivalent_plastic_strain" has out/ok.xmf 'Name="equivalent_plastic_strain"'
+  check "the XDMF shows yielded" has out/ok.xmf 'Name="yielded"'
+  # 1 % confined compression yields the whole block: ebar > 0 at every node
+  h5dump -d /frames/000004/equivalent_plastic_strain -y -w 0 out/ok.h5 | \
+    awk '/DATA/ { on = 1; next } on && /}/ { exit } on { gsub(/,/, " "); for (i = 1; i <= NF; i++) print $i }' > ebar.txt
+  check "equivalent plastic strain > 0 at all 25 nodes" \
+    test "$(awk '$1 > 1e-3 { n++ } END { print n + 0 }' ebar.txt)" -eq 25
+  plastic=$(awk '!/^#/ { w = $NF } END { print w }' out/ok.history.txt)
+  check "plastic work > 0 (got $plastic)" awk -v w="$plastic" 'BEGIN { exit !(w > 0) }'
+  ;;
+restart)
+  deck() {
+    mkdir -p "$1"
+    cat > "$1/slide.nml" <<EOD
+! A j2 slider (finite strain) on a steel base, mu = 0.3: pressed past yield, pulled right, then back.
+&mesh file = '$src/input/verification/sliding/sliding_q4.msh' /
+&body name = 'base', elset = 'base', young = 200000.0, poisson = 0.3, density = 7.8e-9 /
+&body name = 'slider', elset = 'slider', young = 20000.0, poisson = 0.3, density = 2.7e-9,
+  kinematics = 'finite', material = 'j2', yield_stress = 60.0, hardening = 2000.0 /
+&amplitude name = 'press', time = 0.0, 4.0e-5, value = 0.0, 1.0 /
+&amplitude name = 'pull', time = 5.0e-5, 8.0e-5, 1.2e-4, value = 0.0, 1.0, -1.0 /
+&boundary set = 'base_bottom', type = 'fixed', components = 'xy' /
+&boundary set = 'slider_top', type = 'pressure', pressure = 100.0, amplitude = 'press' /
+&boundary set = 'slider_right', type = 'traction', value = 40.0, 0.0, amplitude = 'pull' /
+&time t_end = 1.3e-4, damping = 2.0e6 /
+&output frames = 13, history_every = 7 /
+&contact_pair slave = 'slider_bottom', master = 'base_top', friction = 0.3, method = 'mortar' /
+EOD
+  }
+  deck cont
+  "$raccord" -q -o cont cont/slide.nml > cont/run.out 2>&1
+  code=$?
+  check "continuous run: exit 0 (got $code)" test "$code" -eq 0
+  [ "$code" -eq 0 ] || { cat cont/run.out; finish; }
+  check "the slider is j2 with finite strain" has cont/slide.log "finite strain, j2"
+  plastic=$(awk '!/^#/ { w = $NF } END { print w }' cont/slide.history.txt)
+  check "the slider yields (plastic work $plastic > 0)" awk -v w="$plastic" 'BEGIN { exit !(w > 0) }'
+  deck usr1
+  "$raccord" -q -o usr1 usr1/slide.nml > usr1/run.out 2>&1 &
+  pid=$!
+  n=0
+  while [ "$(awk '!/^#/ && NF > 2 { s = $2 } END { print s + 0 }' usr1/slide.history.txt.part 2>/dev/null || echo 0)" -lt 300 ]; do
+    kill -0 "$pid" 2>/dev/null || { fail "raccord ended before it could be stopped"; finish; }
+    n=$((n + 1))
+    [ "$n" -lt 6000 ] || { kill -9 "$pid"; fail "never reached step 300"; finish; }
+    sleep 0.01
+  done
+  kill -STOP "$pid"
+  kill -USR1 "$pid"
+  kill -CONT "$pid"
+  wait "$pid"
+  code=$?
+  check "SIGUSR1: exit 5 (got $code)" test "$code" -eq 5
+  check "SIGUSR1: checkpoint written" test -s usr1/slide.checkpoint.h5
+  "$raccord" -q --restart usr1/slide.checkpoint.h5 > usr1/restart.out 2>&1
+  code=$?
+  check "restart: exit 0 (got $code)" test "$code" -eq 0
+  for f in slide.history.txt slide.contact1.txt slide.xmf; do
+    check "$f equals the continuous run's, byte for byte" cmp -s "cont/$f" "usr1/$f"
+  done
+  check "slide.h5 equals the continuous run's (h5diff, no tolerance)" \
+    h5diff --exclude-path /scene --exclude-path /scene_path cont/slide.h5 usr1/slide.h5
+  ;;
+*)
+  echo "unknown case $case_name" >&2
+  exit 2
+  ;;
+esac
+finish
