@@ -1,12 +1,16 @@
 !> raccord_bench: timings of the explicit time step on in-memory structured
 !> meshes (doc/performance.md).
 !>
-!>   raccord_bench [--type q4|q8|all] [--kinematics small|finite|all] [--threads T]
+!>   raccord_bench [--type q4|q8|all] [--kinematics small|finite|all]
+!>                 [--material elastic|j2|all] [--threads T]
 !>                 [--min-time SECONDS] [--repeat N] [NEL ...]
 !>
 !> --kinematics finite times the finite-strain neo-Hooke kernel (type column
 !> Q4f / Q8f; Q4 with mean dilatation, as a scene gets by default); all
 !> times each small-strain case and then its finite-strain twin, back to back.
+!> --material j2 times the J2 elastoplastic kernels instead (type Q4p, Q4pf,
+!> ...; mean dilatation, sigma_y0 = 100 MPa so that part of the kernel
+!> phase's field yields); all times the elastic case, then its j2 twin.
 !>
 !> NEL are element counts (1e4, 100000, ...; default 1e4 1e5 1e6), rounded to
 !> a square nx x nx mesh. Each case runs two phases, each on 1 thread and
@@ -30,8 +34,9 @@ program raccord_bench
   use raccord_error, only: error_t
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, element_name
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force, make_finite, &
-    block_watch_t, init_watch
-  use raccord_material, only: MAT_NEO_HOOKE, VOL_FULL, VOL_MEAN
+    block_watch_t, init_watch, make_plastic, block_plastic_t, init_plastic
+  use raccord_material, only: MAT_NEO_HOOKE, MAT_J2, VOL_FULL, VOL_MEAN, KIN_SMALL, KIN_FINITE
+  use raccord_plasticity, only: j2_t
   use raccord_model, only: model_t, set_model_threads
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
@@ -42,11 +47,11 @@ program raccord_bench
   implicit none
 
   integer, parameter :: max_sizes = 16, max_repeat = 99
-  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads, kin, kin0, kin1
+  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads, kin, kin0, kin1, mat, mat0, mat1
   integer(i8) :: sizes(max_sizes)
   real(wp) :: min_time
 
-  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, stat)
+  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, mat0, mat1, stat)
   if (stat /= 0) error stop 1
 
   write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
@@ -63,7 +68,9 @@ program raccord_bench
   cases: do it = 1, ntypes
     do is = 1, nsizes
       do kin = kin0, kin1
-        call run_case(types(it), kin == 2, sizes(is), min_time, nrep, nthreads)
+        do mat = mat0, mat1
+          call run_case(types(it), kin == 2, mat == 2, sizes(is), min_time, nrep, nthreads)
+        end do
       end do
     end do
   end do cases
@@ -73,16 +80,17 @@ contains
 
   subroutine usage()
     write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--kinematics small|finite|all] ' // &
-      '[--threads T] [--min-time SECONDS] [--repeat N] [NEL ...]'
+      '[--material elastic|j2|all] [--threads T] [--min-time SECONDS] [--repeat N] [NEL ...]'
     write(output_unit, '(a)') '  --kinematics: small strain (default), finite strain (neo-Hooke; type Q4f, Q8f) or both'
+    write(output_unit, '(a)') '  --material: elastic (default), J2 plasticity (type Q4p, Q4pf, ...) or both'
     write(output_unit, '(a)') '  NEL: element counts (default 1e4 1e5 1e6), each rounded to a square mesh'
     write(output_unit, '(a)') '  --threads: the thread count compared with 1 (default OMP_NUM_THREADS if set, ' // &
       'else the cores)'
     write(output_unit, '(a)') '  --min-time: least duration of one timing (default 0.3 s); --repeat: timings (default 5)'
   end subroutine usage
 
-  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, stat)
-    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, kin0, kin1, stat
+  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, mat0, mat1, stat)
+    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, kin0, kin1, mat0, mat1, stat
     integer(i8), intent(out) :: sizes(:)
     real(wp), intent(out) :: min_time
     character(len=64) :: arg
@@ -92,6 +100,8 @@ contains
     ntypes = 2
     kin0 = 1
     kin1 = 1
+    mat0 = 1
+    mat1 = 1
     nsizes = 0
     min_time = 0.3_wp
     nrep = 5
@@ -133,6 +143,18 @@ contains
         case ('all'); kin0 = 1; kin1 = 2
         case default
           write(error_unit, '(a)') 'raccord_bench: --kinematics takes small, finite or all, got "' // trim(arg) // '"'
+          stat = 1
+          return
+        end select
+      case ('--material')
+        k = k + 1
+        call get_command_argument(k, arg)
+        select case (trim(arg))
+        case ('elastic'); mat0 = 1; mat1 = 1
+        case ('j2'); mat0 = 2; mat1 = 2
+        case ('all'); mat0 = 1; mat1 = 2
+        case default
+          write(error_unit, '(a)') 'raccord_bench: --material takes elastic, j2 or all, got "' // trim(arg) // '"'
           stat = 1
           return
         end select
@@ -185,9 +207,9 @@ contains
   !> One case: the mesh, the kernel phase on a block, then the step phase
   !> on a model built from the same mesh, each on 1 and nthreads threads;
   !> one output line per thread count.
-  subroutine run_case(etype, finite, nel_wanted, min_time, nrep, nthreads)
+  subroutine run_case(etype, finite, plastic, nel_wanted, min_time, nrep, nthreads)
     integer, intent(in) :: etype, nrep, nthreads
-    logical, intent(in) :: finite
+    logical, intent(in) :: finite, plastic
     integer(i8), intent(in) :: nel_wanted
     real(wp), intent(in) :: min_time
     type(elastic_block_t), allocatable :: blk
@@ -199,7 +221,9 @@ contains
     integer(i8) :: steps(2)
     real(wp) :: kern(max_repeat, 2), step(max_repeat, 2), split(3, max_repeat, 2), mem_kern, mem_step, balance
     real(wp) :: ceil_spd, t_alone, t_each
+    character(len=:), allocatable :: label
 
+    label = element_name(etype) // trim(merge('p', ' ', plastic)) // trim(merge('f', ' ', finite))
     nthr = [1, nthreads]
     nt = 2
     if (nthreads == 1) nt = 1
@@ -216,8 +240,12 @@ contains
     ! phase 1: the kernel alone
     allocate(blk)
     call init_elastic_block(blk, etype, conn, x, 2.1e11_wp, 0.3_wp, .false., 1.0_wp, err)
-    if (finite .and. .not. err%failed()) &
+    if (plastic .and. .not. err%failed()) then
+      call make_plastic(blk, x, merge(KIN_FINITE, KIN_SMALL, finite), j2_t(1.0e8_wp, 2.1e9_wp), VOL_MEAN, &
+        7800.0_wp, err)
+    else if (finite .and. .not. err%failed()) then
       call make_finite(blk, x, MAT_NEO_HOOKE, merge(VOL_MEAN, VOL_FULL, etype == ELEM_Q4), 7800.0_wp, err)
+    end if
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
@@ -228,7 +256,7 @@ contains
 
     ! phase 2: whole steps of the plate model
     call reset_peak_memory()
-    call plate_model(etype, x, conn, model, err, finite)
+    call plate_model(etype, x, conn, model, err, finite, plastic)
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
@@ -240,7 +268,7 @@ contains
 
     do k = 1, nt
       write(output_unit, '(a4, i9, i9, i4, i7, 4f9.1, 3f8.1, 2f6.2, 2f9.1, f7.0, es10.1)') &
-        element_name(etype) // trim(merge('f', ' ', finite)), &
+        label, &
         nel, nnode, nthr(k), steps(k), minval(kern(1:nrep, k)), median(kern(1:nrep, k)), &
         minval(step(1:nrep, k)), median(step(1:nrep, k)), median(split(1, 1:nrep, k)), &
         median(split(2, 1:nrep, k)), median(split(3, 1:nrep, k)), &
@@ -250,8 +278,8 @@ contains
     ! The threaded step against T serial runs at once: the throughput of
     ! each (one step per t_each/T ns per element between them) is what the
     ! hardware gives when every core is busy, whatever the serial time.
-    if (nt > 1) write(output_unit, '(a, i0, a, i0, a, f4.2, a, f0.1, a, f0.1, a, f4.2, a, i0, a)') &
-      '# ceiling ' // trim(element_name(etype) // merge('f', ' ', finite)) // ' ', &
+    if (nt > 1) write(output_unit, '(a, i0, a, i0, a, f0.2, a, f0.1, a, f0.1, a, f0.2, a, i0, a)') &
+      '# ceiling ' // label // ' ', &
       nel, ': ', nthreads, ' serial runs at once give ', ceil_spd, &
       'x the throughput of one (', t_each, ' ns per element and step each, ', t_alone, &
       ' alone); the threaded step runs at ', t_each/(real(nthreads, wp)*median(step(1:nrep, nt))), &
@@ -274,14 +302,16 @@ contains
     real(wp) :: t0, t
     integer :: calls, r, k
     type(block_watch_t) :: watch
+    type(block_plastic_t) :: plastic
     call init_watch(blk, watch)
+    if (blk%material == MAT_J2) call init_plastic(blk, plastic)
     allocate(u(2, size(x, 2)), f(2, size(x, 2)))
     u(1, :) = 1.0e-3_wp*sin(x(1, :) + 0.3_wp*x(2, :))
     u(2, :) = 1.0e-3_wp*cos(0.7_wp*x(1, :) - x(2, :))
     f = 0.0_wp
     do k = 1, size(nthr)
       blk%nthreads = nthr(k)
-      call add_internal_force(blk, u, f, fresh=.true.)
+      call add_internal_force(blk, u, f, fresh=.true., watch=watch, plastic=plastic)
     end do
     repetitions: do r = 1, nrep
       thread_counts: do k = 1, size(nthr)
@@ -291,7 +321,7 @@ contains
         do
           ! as compute_forces calls it (a finite block also reports its
           ! energy, smallest J and stable-step estimate)
-          call add_internal_force(blk, u, f, fresh=.true., watch=watch, monitor=.true.)
+          call add_internal_force(blk, u, f, fresh=.true., watch=watch, monitor=.true., plastic=plastic)
           calls = calls + 1
           t = wall_time() - t0
           if (calls >= 3 .and. t >= min_time) exit

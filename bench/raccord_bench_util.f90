@@ -5,7 +5,7 @@ module raccord_bench_util
   use raccord_error, only: error_t
   use raccord_mesh, only: mesh_t, ELEM_Q8
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED
-  use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE
+  use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE, MAT_J2
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
   implicit none
@@ -71,10 +71,12 @@ contains
   !> program builds one (build_model): one body of steel-like material
   !> (E = 210 GPa, nu = 0.3, rho = 7800, plane strain, SI units), clamped on
   !> the left side x = 0, moving at v0 = (0, 1) m/s. x and conn are consumed.
-  subroutine plate_model(etype, x, conn, model, err, finite)
+  subroutine plate_model(etype, x, conn, model, err, finite, plastic)
     integer, intent(in) :: etype
     !> a finite-strain neo-Hooke plate (default: small strain, Hooke)
     logical, intent(in), optional :: finite
+    !> a J2 plate (sigma_y0 = 100 MPa, H = 2.1 GPa; with finite, finite strain)
+    logical, intent(in), optional :: plastic
     real(wp), allocatable, intent(inout) :: x(:,:)
     integer, allocatable, intent(inout) :: conn(:,:)
     type(model_t), intent(out) :: model
@@ -115,6 +117,13 @@ contains
       if (finite) then
         scene%bodies(1)%kinematics = KIN_FINITE
         scene%bodies(1)%material = MAT_NEO_HOOKE
+      end if
+    end if
+    if (present(plastic)) then
+      if (plastic) then
+        scene%bodies(1)%material = MAT_J2
+        scene%bodies(1)%yield_stress = 1.0e8_wp
+        scene%bodies(1)%hardening = 2.1e9_wp
       end if
     end if
     bc%set = 'left'

@@ -1,33 +1,37 @@
 #!/bin/sh
 # Smoke test of raccord_bench (CTest bench_smoke): a tiny Q4 and Q8 case,
-# small strain and finite strain (Q4f, Q8f), on 1 and 2 threads must print
+# small strain and finite strain (Q4f, Q8f), elastic and J2 (Q4p, Q4pf, ...),
+# on 1 and 2 threads must print
 # both lines and the ceiling line per case, with positive timings and
 # speed-ups and an energy balance at round-off for small strain, below 1e-6
-# for finite strain (O(dt^2), doc/theory-finite.md) (the benchmark's own
+# for finite strain and J2 (O(dt^2), doc/theory-finite.md; the plastic
+# work is a term of the balance, doc/theory-plasticity.md) (the benchmark's own
 # check that the kernel it times is right). Timings are not judged: a test
 # asserts no speed.
 set -eu
 bench=$1
-out=$(OPENBLAS_NUM_THREADS=1 "$bench" --type all --kinematics all --threads 2 --repeat 2 --min-time 0.01 2000) || {
+out=$(OPENBLAS_NUM_THREADS=1 "$bench" --type all --kinematics all --material all --threads 2 --repeat 2 --min-time 0.01 2000) || {
   echo "bench_smoke: raccord_bench failed"; exit 1; }
 echo "$out"
 echo "$out" | awk '
-  $1 == "Q4" || $1 == "Q8" || $1 == "Q4f" || $1 == "Q8f" {
+  $1 ~ /^Q[48]p?f?$/ {
     lines[$1 " " $4]++
     for (i = 6; i <= 14; i++) if (!($i + 0 >= 0) || $i == "NaN") { print "bench_smoke: bad column " i " in: " $0; bad = 1 }
     if ($6 + 0 <= 0 || $8 + 0 <= 0 || $13 + 0 <= 0 || $14 + 0 <= 0) { print "bench_smoke: a timing or speed-up is not positive: " $0; bad = 1 }
     b = $18 + 0; if (b < 0) b = -b
-    tol = ($1 ~ /f$/) ? 1e-6 : 1e-9
+    tol = ($1 ~ /[fp]/) ? 1e-6 : 1e-9
     if (!(b < tol)) { print "bench_smoke: energy balance " $18 " is above " tol ": " $0; bad = 1 }
   }
-  /^# ceiling Q[48]f? / {
+  /^# ceiling Q[48]p?f? / {
     ceil[$3]++
     if (!match($0, /give [0-9.]+x/) || !match($0, /runs at [0-9.]+ of/)) { print "bench_smoke: ceiling line without figures: " $0; bad = 1 }
   }
   END {
-    split("Q4 1,Q4 2,Q8 1,Q8 2,Q4f 1,Q4f 2,Q8f 1,Q8f 2", want, ",")
-    for (k in want) if (lines[want[k]] != 1) { print "bench_smoke: expected one line for " want[k] " thread(s)"; bad = 1 }
-    if (ceil["Q4"] != 1 || ceil["Q8"] != 1 || ceil["Q4f"] != 1 || ceil["Q8f"] != 1) {
-      print "bench_smoke: expected one ceiling line per type"; bad = 1 }
+    split("Q4,Q8,Q4f,Q8f,Q4p,Q8p,Q4pf,Q8pf", types, ",")
+    for (k in types) {
+      for (t = 1; t <= 2; t++) if (lines[types[k] " " t] != 1) {
+        print "bench_smoke: expected one line for " types[k] " on " t " thread(s)"; bad = 1 }
+      if (ceil[types[k]] != 1) { print "bench_smoke: expected one ceiling line for " types[k]; bad = 1 }
+    }
     exit bad
   }'

@@ -133,8 +133,8 @@ contains
       if (any_plastic(state)) call h5_write_real(file, '/state/plastic_work', [state%energy%plastic], where, err)
       do ib = 1, size(state%plastic, 2)
         do kb = 1, size(state%plastic, 1)
-          if (.not. allocated(state%plastic(kb, ib)%old)) cycle
-          associate (h => state%plastic(kb, ib)%old)
+          if (.not. allocated(state%plastic(kb, ib)%h)) cycle
+          associate (h => state%plastic(kb, ib)%h)
             call h5_write_real(file, plastic_path(kb, ib), reshape(h, [size(h)/size(h, 4), size(h, 4)]), where, err)
           end associate
         end do
@@ -265,15 +265,14 @@ contains
         end if
         do ib = 1, size(state%plastic, 2)
           do kb = 1, size(state%plastic, 1)
-            if (.not. allocated(state%plastic(kb, ib)%old)) cycle
-            associate (h => state%plastic(kb, ib)%old)
+            if (.not. allocated(state%plastic(kb, ib)%h)) cycle
+            associate (h => state%plastic(kb, ib)%h)
               allocate(flat(size(h)/size(h, 4), size(h, 4)))
               call h5_read_real(file, plastic_path(kb, ib), flat, where, err)
               if (err%failed()) exit steps
               h = reshape(flat, shape(h))
               deallocate(flat)
             end associate
-            state%plastic(kb, ib)%new = state%plastic(kb, ib)%old
           end do
         end do
       end if
@@ -341,8 +340,8 @@ contains
       if (any_plastic(state)) call crc_add(c, [state%energy%plastic])
       do ib = 1, size(state%plastic, 2)
         do kb = 1, size(state%plastic, 1)
-          if (.not. allocated(state%plastic(kb, ib)%old)) cycle
-          associate (h => state%plastic(kb, ib)%old)
+          if (.not. allocated(state%plastic(kb, ib)%h)) cycle
+          associate (h => state%plastic(kb, ib)%h)
             call crc_add(c, reshape(h, [size(h)/size(h, 4), size(h, 4)]))
           end associate
         end do
@@ -509,7 +508,7 @@ contains
     any_plastic = .false.
     do ib = 1, size(state%plastic, 2)
       do kb = 1, size(state%plastic, 1)
-        if (allocated(state%plastic(kb, ib)%old)) any_plastic = .true.
+        if (allocated(state%plastic(kb, ib)%h)) any_plastic = .true.
       end do
     end do
   end function any_plastic

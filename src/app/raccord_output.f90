@@ -623,7 +623,7 @@ contains
   !> The j2 bodies' nodal fields (doc/output-format.md):
   !> equivalent_plastic_strain, the mean over each element's Gauss points
   !> averaged at the nodes, and yielded, at each node the fraction of its
-  !> elements whose return was plastic in the step to this frame (0 at the
+  !> elements whose return was plastic at this frame's forces (0 at the
   !> nodes of other bodies).
   subroutine write_plastic_fields(out, model, state, err)
     type(output_t), intent(inout) :: out
@@ -637,7 +637,8 @@ contains
     do ib = 1, size(model%bodies)
       do k = 1, size(model%bodies(ib)%blocks)
         if (model%bodies(ib)%blocks(k)%material /= MAT_J2) cycle
-        call add_nodal_plastic(model%bodies(ib)%blocks(k), state%plastic(k, ib), out%s_node(1:1, :), &
+        call add_nodal_plastic(model%bodies(ib)%blocks(k), state%plastic(k, ib), state%watch(k, ib), &
+          out%s_node(1:1, :), &
           out%r_node(1:1, :), out%wsum)
       end do
     end do

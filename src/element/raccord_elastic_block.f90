@@ -65,7 +65,7 @@ module raccord_elastic_block
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
-  public :: make_plastic, init_plastic, swap_plastic, watch_dissipation, reports_energy
+  public :: make_plastic, init_plastic, watch_dissipation, reports_energy
   public :: add_nodal_plastic
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
@@ -155,15 +155,17 @@ module raccord_elastic_block
     real(wp), allocatable :: energy(:), jmin(:), w2(:)
     integer, allocatable :: jmin_el(:)
     real(wp), allocatable :: dissip(:)   !< j2 blocks: plastic work of the step per chunk
+    !> j2 blocks, (chunk_len, nchunk): the element's return was plastic at
+    !> a Gauss point at the last forces
+    logical, allocatable :: active(:,:)
   end type block_watch_t
 
   !> The internal variables of a j2 block (raccord_plasticity, nhist per
-  !> Gauss point, chunk-major like the kernel data): old = after the last
-  !> step, new = after the return at the last forces. The caller owns it
-  !> (one per block, in the run's state) and calls swap_plastic once per
-  !> step, when the step's state is final.
+  !> Gauss point, chunk-major like the kernel data), updated in place by
+  !> each force evaluation. The caller owns it (one per block, in the run's
+  !> state).
   type, public :: block_plastic_t
-    real(wp), allocatable :: old(:,:,:,:), new(:,:,:,:)   !< (chunk_len, nhist, ngp, nchunk)
+    real(wp), allocatable :: h(:,:,:,:)   !< (chunk_len, nhist, ngp, nchunk)
   end type block_plastic_t
 
   !> Element-level work: raccord_elastic_block_element.f90 (a submodule).
@@ -293,26 +295,23 @@ module raccord_elastic_block
       real(wp), intent(in) :: density
       type(error_t), intent(inout) :: err
     end subroutine make_plastic
-    !> The internal variables of a virgin j2 block (old = new).
+    !> The internal variables of a virgin j2 block.
     module subroutine init_plastic(blk, plastic)
       type(elastic_block_t), intent(in) :: blk
       type(block_plastic_t), intent(out) :: plastic
     end subroutine init_plastic
-    !> The step's state is final: new becomes old (no copy, no allocation).
-    module subroutine swap_plastic(plastic)
-      type(block_plastic_t), intent(inout) :: plastic
-    end subroutine swap_plastic
     !> Plastic work of the last forces' step, summed in chunk order.
     pure module real(wp) function watch_dissipation(watch) result(w)
       type(block_watch_t), intent(in) :: watch
     end function watch_dissipation
     !> s(1, nnode) += the mean equivalent plastic strain of each element
-    !> after the last return (plastic%new), y(1, nnode) += 1 for the elements
-    !> whose return was plastic at a Gauss point in that step; wsum += 1 per
+    !> after the last return, y(1, nnode) += 1 for the elements whose return
+    !> was plastic at a Gauss point then (watch%active); wsum += 1 per
     !> element and node.
-    module subroutine add_nodal_plastic(blk, plastic, s, y, wsum)
+    module subroutine add_nodal_plastic(blk, plastic, watch, s, y, wsum)
       type(elastic_block_t), intent(in) :: blk
       type(block_plastic_t), intent(in) :: plastic
+      type(block_watch_t), intent(in) :: watch
       real(wp), intent(inout) :: s(:,:), y(:,:), wsum(:)
     end subroutine add_nodal_plastic
     !> The nodal stress contributions of the elements of group grp of a j2
@@ -606,11 +605,11 @@ contains
     !> omega^2 and plastic work
     type(block_watch_t), intent(inout), optional :: watch
     logical, intent(in), optional :: monitor
-    !> j2 blocks: the internal variables, read from old, written to new
-    !> (required for a j2 block)
+    !> j2 blocks: the internal variables, updated by the return (required
+    !> for a j2 block)
     type(block_plastic_t), intent(inout), optional :: plastic
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rinv, en, jm, w2, dis
-    real(wp) :: sgp(chunk_len, 4, max_gp)
+    real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len)
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
     logical :: reset, mon, watched, mean
     nen = blk%nen
@@ -626,7 +625,7 @@ contains
     dis = 0.0_wp
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, rinv, plastic, mean) &
-    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp)
+    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp, act)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
@@ -661,27 +660,30 @@ contains
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_J2_SMALL_Q4)
             call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
-              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_J2_SMALL_Q8)
             call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
-              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_J2_FINITE_Q4)
             call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
-              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_J2_FINITE_Q8)
             call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%old(:, :, :, ic), &
-              plastic%new(:, :, :, ic), ue, fe, sgp, en, dis, jm, jel, w2)
+              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              ue, fe, sgp, act, en, dis, jm, jel, w2)
           end select
           if (watched .and. reports_energy(blk)) then
             watch%energy(ic) = en
             watch%jmin(ic) = jm
             watch%jmin_el(ic) = jel
             if (mon) watch%w2(ic) = w2
-            if (blk%material == MAT_J2) watch%dissip(ic) = dis
+            if (blk%material == MAT_J2) then
+              watch%dissip(ic) = dis
+              watch%active(:, ic) = act > 0.0_wp
+            end if
           end if
           do a = 1, nen
             do i = 1, nc
@@ -830,7 +832,7 @@ contains
     !> the strain instead (small strain, or logarithmic in finite strain)
     logical, intent(in), optional :: strain
     !> j2 blocks: their internal variables (the stress is the return's from
-    !> plastic%old at u, as at the last forces); required for their stress
+    !> a copy of them at u); required for their stress
     type(block_plastic_t), intent(in), optional :: plastic
     integer :: col, k, e, e0, e1, what
     integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 5

@@ -137,6 +137,7 @@ contains
     allocate(watch%energy(blk%nchunk), watch%jmin(blk%nchunk), watch%w2(blk%nchunk), source=0.0_wp)
     allocate(watch%jmin_el(blk%nchunk), source=0)
     allocate(watch%dissip(blk%nchunk), source=0.0_wp)
+    allocate(watch%active(chunk_len, blk%nchunk), source=.false.)
     watch%jmin = 1.0_wp
   end procedure init_watch
 

@@ -44,20 +44,12 @@ contains
   module procedure init_plastic
     real(wp) :: h0(nhist)
     integer :: v
-    allocate(plastic%old(chunk_len, nhist, blk%ngp, blk%nchunk))
+    allocate(plastic%h(chunk_len, nhist, blk%ngp, blk%nchunk))
     h0 = j2_initial_history(blk%kinematics == KIN_FINITE)
     do v = 1, nhist
-      plastic%old(:, v, :, :) = h0(v)
+      plastic%h(:, v, :, :) = h0(v)
     end do
-    plastic%new = plastic%old
   end procedure init_plastic
-
-  module procedure swap_plastic
-    real(wp), allocatable :: spare(:,:,:,:)
-    call move_alloc(plastic%old, spare)
-    call move_alloc(plastic%new, plastic%old)
-    call move_alloc(spare, plastic%new)
-  end procedure swap_plastic
 
   module procedure watch_dissipation
     integer :: k
@@ -74,8 +66,8 @@ contains
     do e = 1, blk%nel
       ic = (e - 1)/chunk_len + 1
       il = e - (ic - 1)*chunk_len
-      eb = sum(plastic%new(il, h_ebar, :, ic))/real(blk%ngp, wp)
-      act = merge(1.0_wp, 0.0_wp, any(plastic%new(il, h_ebar, :, ic) > plastic%old(il, h_ebar, :, ic)))
+      eb = sum(plastic%h(il, h_ebar, :, ic))/real(blk%ngp, wp)
+      act = merge(1.0_wp, 0.0_wp, watch%active(il, ic))
       do a = 1, blk%nen
         node = blk%conn(a, e)
         s(1, node) = s(1, node) + eb
@@ -85,12 +77,12 @@ contains
     end do
   end procedure add_nodal_plastic
 
-  !> The group's chunks through the kernel (from plastic%old into a scratch
-  !> state, so the run's state is untouched), then each element's
+  !> The group's chunks through the kernel (on a copy of their internal
+  !> variables, so the run's state is untouched), then each element's
   !> Gauss-point stresses extrapolated to its nodes (theory eq. 7.1).
   module procedure add_group_j2_stress
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), sgp(chunk_len, 4, max_gp)
-    real(wp) :: hnew(chunk_len, nhist, max_gp), en, dis, jm, w2, rinv
+    real(wp) :: hist(chunk_len, nhist, max_gp), act(chunk_len), en, dis, jm, w2, rinv
     integer :: ic, e0, nc, i, a, node, jel, g, ngp
     logical :: mean
     mean = blk%volumetric == VOL_MEAN
@@ -105,23 +97,24 @@ contains
           ue(i, :, a) = u(:, node)
         end do
       end do
+      hist(:, :, 1:ngp) = plastic%h(:, :, :, ic)
       select case (blk%kernel)
       case (KERN_J2_SMALL_Q4)
         call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
-          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          ue, fe, sgp, act, en, dis, jm, jel, w2)
       case (KERN_J2_SMALL_Q8)
         call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
-          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          ue, fe, sgp, act, en, dis, jm, jel, w2)
       case (KERN_J2_FINITE_Q4)
         call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
-          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          ue, fe, sgp, act, en, dis, jm, jel, w2)
       case (KERN_J2_FINITE_Q8)
         call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., plastic%old(:, :, :, ic), &
-          hnew, ue, fe, sgp, en, dis, jm, jel, w2)
+          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          ue, fe, sgp, act, en, dis, jm, jel, w2)
       end select
       ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)
       call extrapolate(reshape(sgp(:, :, 1:ngp), [chunk_len, 4, ngp]))

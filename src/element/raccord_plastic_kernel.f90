@@ -5,9 +5,12 @@
 !> those of the finite-strain kernel ((F-1), (F-2) of raccord_finite_kernel;
 !> Q4 with the exact gradient split): only the stress differs. It comes from
 !> the return map of raccord_plasticity, on one Gauss point of the whole
-!> chunk per call, from the internal variables of the last step (hold) into
-!> hnew; the caller keeps both and swaps them once per step, so computing
-!> the forces of one state twice gives the same result.
+!> chunk per call, which updates the internal variables (hist) in place:
+!> one read and one write of them per step, the least memory traffic (the
+!> J2 step is bound by it on large meshes, doc/performance.md). Computing
+!> the forces of a state twice starts the second return on the yield
+!> surface, so it changes nothing but round-off; the stress output works
+!> on a copy (raccord_elastic_block_plastic).
 !>
 !> Volumetric treatment (volumetric = 'mean_dilatation', the default for
 !> j2): plastic flow is isochoric, so a fully integrated Q4 (and Q8) would
@@ -39,12 +42,13 @@ module raccord_plastic_kernel
 contains
 
   !> fe = internal forces of nc J2 elements of a chunk; sg = Cauchy stress
-  !> (xx, yy, xy, zz) at every Gauss point; hnew = the internal variables
-  !> after this state's return from hold; energy = sum c W_e, dissip = sum c
+  !> (xx, yy, xy, zz) at every Gauss point; hist = the internal variables,
+  !> updated by this state's return; act = 1 for the elements whose return
+  !> was plastic at a Gauss point, else 0; energy = sum c W_e, dissip = sum c
   !> dW_p; jmin/jmin_el/w2 as the finite kernel (jmin = 1 in small strain).
   !> The other arguments are those of kernel_finite_q4.
   pure subroutine kernel_j2_small_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 4, ngp = 4
     real(wp), parameter :: lfac = 1.0_wp
     logical, parameter :: split = .true., finite = .false.
@@ -52,7 +56,7 @@ contains
   end subroutine kernel_j2_small_q4
 
   pure subroutine kernel_j2_small_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 8, ngp = 9
     real(wp), parameter :: lfac = 0.3_wp
     logical, parameter :: split = .false., finite = .false.
@@ -60,7 +64,7 @@ contains
   end subroutine kernel_j2_small_q8
 
   pure subroutine kernel_j2_finite_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 4, ngp = 4
     real(wp), parameter :: lfac = 1.0_wp
     logical, parameter :: split = .true., finite = .true.
@@ -68,7 +72,7 @@ contains
   end subroutine kernel_j2_finite_q4
 
   pure subroutine kernel_j2_finite_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hold, hnew, ue, fe, sg, energy, dissip, jmin, jmin_el, w2)
+      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 8, ngp = 9
     real(wp), parameter :: lfac = 0.3_wp
     logical, parameter :: split = .false., finite = .true.

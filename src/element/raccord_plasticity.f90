@@ -25,15 +25,20 @@
 !> to the small-strain return; no rate appears, so elastic cycles store and
 !> give back exactly the Hencky energy.
 !>
-!> Internal variables per point, nhist of them: the symmetric tensor
-!> (xx, yy, xy, zz) -- eps_p (tensor shear) in small strain, Cp^-1 in finite
-!> strain -- and ebar. Energies per unit (reference) volume: elastic
+!> Internal variables per point, nhist = 4 of them: the in-plane part
+!> (xx, yy, xy) of a symmetric tensor -- eps_p (tensor shear) in small
+!> strain, Cp^-1 in finite strain -- and ebar. The zz component follows:
+!> eps_p is traceless (eps_p,zz = -(eps_p,xx + eps_p,yy)) and det Cp = 1
+!> (Cp^-1_zz = 1 / (Cp^-1_xx Cp^-1_yy - Cp^-1_xy^2)), so it is not stored
+!> (the J2 step is bound by its memory traffic on large meshes), and the
+!> flow stays exactly isochoric in both. Energies per unit (reference) volume: elastic
 !>   W_e = p^2/(2K) + s:s/(4G)   or   (K/2)(tr eps_e)^2 + G |dev eps_e|^2   (P-6)
 !> and plastic work by the trapezoid, exact for linear hardening,
 !>   dW_p = (1/2)(sigma_y(ebar_n) + sigma_y(ebar_n+1)) (ebar_n+1 - ebar_n). (P-7)
 module raccord_plasticity
   use raccord_kinds, only: wp
   use raccord_material, only: moduli_t
+  use raccord_finite_kernel, only: fin_chunk_len
   implicit none
   private
 
@@ -44,8 +49,8 @@ module raccord_plasticity
   end type j2_t
 
   !> Internal variables per integration point: tensor (xx, yy, xy, zz), ebar.
-  integer, parameter, public :: nhist = 5
-  integer, parameter, public :: h_xx = 1, h_yy = 2, h_xy = 3, h_zz = 4, h_ebar = 5
+  integer, parameter, public :: nhist = 4
+  integer, parameter, public :: h_xx = 1, h_yy = 2, h_xy = 3, h_ebar = 4
   real(wp), parameter :: r23 = 0.816496580927726_wp   ! sqrt(2/3)
 
   public :: j2_initial_history, j2_return_small, j2_return_hencky, j2_small_lanes, j2_hencky_lanes
@@ -61,12 +66,12 @@ contains
     if (finite) then
       h(h_xx) = 1.0_wp
       h(h_yy) = 1.0_wp
-      h(h_zz) = 1.0_wp
     end if
   end function j2_initial_history
 
   !> Small-strain radial return (P-1)..(P-3) at one point. eps = total strain
-  !> (xx, yy, xy (tensor), zz); hold/hnew = internal variables before/after;
+  !> (xx, yy, xy (tensor), zz); hold/hnew = internal variables before/after
+  !> (eps_p xx, yy, xy and ebar);
   !> sig = stress (xx, yy, xy, zz); we = W_e (P-6); dwp = dW_p (P-7); both
   !> per unit volume. With theta_bar present, the volumetric strain is
   !> replaced by it (B-bar: eps_bar = dev eps + theta_bar/3 I).
@@ -76,10 +81,18 @@ contains
     real(wp), intent(in) :: eps(4), hold(nhist)
     real(wp), intent(out) :: hnew(nhist), sig(4), we, dwp
     real(wp), intent(in), optional :: theta_bar
-    real(wp) :: tb(1), w1(1), d1(1), hn(1, nhist), s1(1, 4)
+    real(wp) :: tb(fin_chunk_len), w1(fin_chunk_len), d1(fin_chunk_len), hn(fin_chunk_len, nhist)
+    real(wp) :: s1(fin_chunk_len, 4), e1(fin_chunk_len, 4), h1(fin_chunk_len, nhist)
+    ! lane 1 of a chunk
+    e1 = 0.0_wp
+    h1 = 0.0_wp
+    tb = 0.0_wp
+    e1(1, :) = eps
+    h1(1, :) = hold
     tb(1) = eps(1) + eps(2) + eps(4)
     if (present(theta_bar)) tb(1) = theta_bar
-    call j2_small_lanes(1, 1, m, j2, reshape(eps, [1, 4]), tb, reshape(hold, [1, nhist]), hn, s1, w1, d1)
+    call j2_small_lanes(1, m, j2, e1, tb, h1, s1, w1, d1)
+    hn = h1
     hnew = hn(1, :)
     sig = s1(1, :)
     we = w1(1)
@@ -88,7 +101,7 @@ contains
 
   !> Finite-strain return (P-4), (P-1)..(P-3), (P-5) at one point, plane
   !> strain (F33 = 1). f = in-plane F (11, 21, 12, 22); hold/hnew = Cp^-1
-  !> (xx, yy, xy, zz) and ebar; tau = Kirchhoff stress (xx, yy, xy, zz);
+  !> (xx, yy, xy) and ebar; tau = Kirchhoff stress (xx, yy, xy, zz);
   !> we = W_e per reference volume (P-6); dwp (P-7). With jbar present
   !> (mean dilatation), the pressure is K ln(jbar) J/jbar and the volumetric
   !> energy is left to the caller (V_e (K/2) ln(jbar)^2).
@@ -98,36 +111,46 @@ contains
     real(wp), intent(in) :: f(4), hold(nhist)
     real(wp), intent(out) :: hnew(nhist), tau(4), we, dwp
     real(wp), intent(in), optional :: jbar
-    real(wp) :: jb(1), w1(1), d1(1), wm(1), hn(1, nhist), t1(1, 4)
-    jb(1) = 0.0_wp
+    real(wp) :: jb(fin_chunk_len), w1(fin_chunk_len), d1(fin_chunk_len), wm(fin_chunk_len)
+    real(wp) :: hn(fin_chunk_len, nhist), t1(fin_chunk_len, 4), f1(fin_chunk_len, 4), h1(fin_chunk_len, nhist)
+    ! lane 1 of a chunk
+    f1 = 0.0_wp
+    h1 = 0.0_wp
+    jb = 1.0_wp
+    f1(1, :) = f
+    h1(1, :) = hold
     if (present(jbar)) jb(1) = jbar
-    call j2_hencky_lanes(1, 1, m, j2, present(jbar), reshape(f, [1, 4]), jb, reshape(hold, [1, nhist]), &
-      hn, t1, w1, d1, wm)
+    call j2_hencky_lanes(1, m, j2, present(jbar), f1, jb, h1, t1, w1, d1, wm)
+    hn = h1
     hnew = hn(1, :)
     tau = t1(1, :)
     we = w1(1)
     dwp = d1(1)
   end subroutine j2_return_hencky
 
-  !> (P-1)..(P-3) on n lanes (leading dimension ld): the form the chunk
+  !> (P-1)..(P-3) on n lanes of a chunk (leading dimension the chunk
+  !> length, a constant, so that the loop vectorises): the form the chunk
   !> kernels call, one Gauss point of a chunk of elements per call, without
   !> a branch. eps(:, 4) total strain, tb the volumetric strain to use (its
   !> own trace, or the element's mean with B-bar).
-  pure subroutine j2_small_lanes(n, ld, m, j2, eps, tb, hold, hnew, sig, we, dwp)
-    integer, intent(in) :: n, ld
+  pure subroutine j2_small_lanes(n, m, j2, eps, tb, h, sig, we, dwp)
+    integer, intent(in) :: n
+    integer, parameter :: ld = fin_chunk_len
     type(moduli_t), intent(in) :: m
     type(j2_t), intent(in) :: j2
-    real(wp), intent(in) :: eps(ld, 4), tb(ld), hold(ld, nhist)
-    real(wp), intent(out) :: hnew(ld, nhist), sig(ld, 4), we(ld), dwp(ld)
-    real(wp) :: e1, e2, e3, e4, tr3, s1, s2, s3, s4, nrm, f, dg, sc, eb, th, g2, rh
+    real(wp), intent(in) :: eps(ld, 4), tb(ld)
+    real(wp), intent(inout) :: h(ld, nhist)
+    real(wp), intent(out) :: sig(ld, 4), we(ld), dwp(ld)
+    real(wp) :: e1, e2, e3, e4, tr3, s1, s2, s3, s4, nrm, f, dg, sc, eb, eb0, th, g2, rh
     integer :: i
     g2 = 2.0_wp*m%g
     rh = 1.0_wp/(g2 + 2.0_wp*j2%hardening/3.0_wp)
     do i = 1, n
-      e1 = eps(i, 1) - hold(i, 1)
-      e2 = eps(i, 2) - hold(i, 2)
-      e3 = eps(i, 3) - hold(i, 3)
-      e4 = eps(i, 4) - hold(i, 4)
+      e1 = eps(i, 1) - h(i, 1)
+      e2 = eps(i, 2) - h(i, 2)
+      e3 = eps(i, 3) - h(i, 3)
+      e4 = eps(i, 4) + h(i, 1) + h(i, 2)        ! eps_p,zz = -(eps_p,xx + eps_p,yy)
+      eb0 = h(i, h_ebar)
       th = tb(i)
       ! deviator of the elastic trial strain (eps_p is traceless)
       tr3 = (e1 + e2 + e4)/3.0_wp
@@ -136,26 +159,25 @@ contains
       s4 = g2*(e4 - tr3)
       s3 = g2*e3
       nrm = sqrt(s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)
-      f = nrm - r23*(j2%yield0 + j2%hardening*hold(i, h_ebar))
+      f = nrm - r23*(j2%yield0 + j2%hardening*eb0)
       dg = max(f, 0.0_wp)*rh
       sc = dg/max(nrm, tiny(1.0_wp))
-      hnew(i, 1) = hold(i, 1) + sc*s1
-      hnew(i, 2) = hold(i, 2) + sc*s2
-      hnew(i, 3) = hold(i, 3) + sc*s3
-      hnew(i, 4) = hold(i, 4) + sc*s4
+      h(i, 1) = h(i, 1) + sc*s1
+      h(i, 2) = h(i, 2) + sc*s2
+      h(i, 3) = h(i, 3) + sc*s3
       sc = 1.0_wp - g2*sc
       s1 = sc*s1
       s2 = sc*s2
       s3 = sc*s3
       s4 = sc*s4
-      eb = hold(i, h_ebar) + r23*dg
-      hnew(i, h_ebar) = eb
+      eb = eb0 + r23*dg
+      h(i, h_ebar) = eb
       sig(i, 1) = s1 + m%k*th
       sig(i, 2) = s2 + m%k*th
       sig(i, 3) = s3
       sig(i, 4) = s4 + m%k*th
       we(i) = 0.5_wp*m%k*th*th + (s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)/(2.0_wp*g2)
-      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(hold(i, h_ebar) + eb))*(eb - hold(i, h_ebar))
+      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(eb0 + eb))*(eb - eb0)
     end do
   end subroutine j2_small_lanes
 
@@ -164,16 +186,18 @@ contains
   !> the volumetric energy. wmod: a bound of the current wave modulus
   !> (K + 4G/3 + the largest principal |tau|, the elastic moduli: plastic
   !> flow only softens) for the stable step.
-  pure subroutine j2_hencky_lanes(n, ld, m, j2, mean, f, jb, hold, hnew, tau, we, dwp, wmod)
-    integer, intent(in) :: n, ld
+  pure subroutine j2_hencky_lanes(n, m, j2, mean, f, jb, h, tau, we, dwp, wmod)
+    integer, intent(in) :: n
+    integer, parameter :: ld = fin_chunk_len
     type(moduli_t), intent(in) :: m
     type(j2_t), intent(in) :: j2
     logical, intent(in) :: mean
-    real(wp), intent(in) :: f(ld, 4), jb(ld), hold(ld, nhist)
-    real(wp), intent(out) :: hnew(ld, nhist), tau(ld, 4), we(ld), dwp(ld), wmod(ld)
+    real(wp), intent(in) :: f(ld, 4), jb(ld)
+    real(wp), intent(inout) :: h(ld, nhist)
+    real(wp), intent(out) :: tau(ld, 4), we(ld), dwp(ld), wmod(ld)
     real(wp) :: f11, f21, f12, f22, q11, q22, q12, g11, g12, g21, g22, b11, b22, b12, b33
     real(wp) :: mid, rad, rr, cs, sn, e1, e2, e3, tr, d1, d2, d3, nrm, fy, dg, sc, eb, p, t1, t2, t3, j, rj
-    real(wp) :: a1, a2, x11, x22, x12, g2, rh, wvol, pvol, jbi
+    real(wp) :: a1, a2, x11, x22, x12, g2, rh, wvol, pvol, jbi, eb0
     integer :: i
     g2 = 2.0_wp*m%g
     rh = 1.0_wp/(g2 + 2.0_wp*j2%hardening/3.0_wp)
@@ -184,9 +208,10 @@ contains
       f21 = f(i, 2)
       f12 = f(i, 3)
       f22 = f(i, 4)
-      q11 = hold(i, 1)
-      q22 = hold(i, 2)
-      q12 = hold(i, 3)
+      q11 = h(i, 1)
+      q22 = h(i, 2)
+      q12 = h(i, 3)
+      eb0 = h(i, h_ebar)
       ! (P-4): be_tr = F Cp^-1 F^T (in-plane block), be33 = Cp^-1_33
       g11 = f11*q11 + f12*q12
       g12 = f11*q12 + f12*q22
@@ -195,7 +220,7 @@ contains
       b11 = g11*f11 + g12*f12
       b22 = g21*f21 + g22*f22
       b12 = g11*f21 + g12*f22
-      b33 = hold(i, 4)
+      b33 = 1.0_wp/(q11*q22 - q12*q12)          ! Cp^-1_zz, det Cp = 1
       ! principal values; (cs, sn) = (cos, sin) of twice the first direction
       mid = 0.5_wp*(b11 + b22)
       rad = sqrt((0.5_wp*(b11 - b22))**2 + b12*b12)
@@ -211,13 +236,13 @@ contains
       d3 = e3 - tr/3.0_wp
       ! (P-1)..(P-3) on the principal deviator
       nrm = g2*sqrt(d1*d1 + d2*d2 + d3*d3)
-      fy = nrm - r23*(j2%yield0 + j2%hardening*hold(i, h_ebar))
+      fy = nrm - r23*(j2%yield0 + j2%hardening*eb0)
       dg = max(fy, 0.0_wp)*rh
       sc = 1.0_wp - g2*dg/max(nrm, tiny(1.0_wp))
       d1 = sc*d1
       d2 = sc*d2
       d3 = sc*d3
-      eb = hold(i, h_ebar) + r23*dg
+      eb = eb0 + r23*dg
       j = f11*f22 - f21*f12
       ! pressure (Kirchhoff): K tr eps_e, or with mean dilatation K ln(Jbar) J/Jbar
       ! (jbar is read as 1 without mean dilatation, where its term is off)
@@ -231,7 +256,7 @@ contains
       tau(i, 3) = 0.5_wp*(t1 - t2)*sn
       tau(i, 4) = t3
       we(i) = wvol*tr*tr + m%g*(d1*d1 + d2*d2 + d3*d3)
-      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(hold(i, h_ebar) + eb))*(eb - hold(i, h_ebar))
+      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(eb0 + eb))*(eb - eb0)
       wmod(i) = m%k + 2.0_wp*g2/3.0_wp + max(abs(t1), abs(t2), abs(t3))
       ! (P-5): be = exp(2 eps_e) in the same directions, Cp^-1 = F^-1 be F^-T
       a1 = exp(2.0_wp*(d1 + tr/3.0_wp))
@@ -244,11 +269,10 @@ contains
       g12 = (f22*x12 - f12*x22)*rj
       g21 = (f11*x12 - f21*x11)*rj
       g22 = (f11*x22 - f21*x12)*rj
-      hnew(i, 1) = (g11*f22 - g12*f12)*rj
-      hnew(i, 2) = (g22*f11 - g21*f21)*rj
-      hnew(i, 3) = (g12*f11 - g11*f21)*rj
-      hnew(i, 4) = exp(2.0_wp*(d3 + tr/3.0_wp))
-      hnew(i, h_ebar) = eb
+      h(i, 1) = (g11*f22 - g12*f12)*rj
+      h(i, 2) = (g22*f11 - g21*f21)*rj
+      h(i, 3) = (g12*f11 - g11*f21)*rj
+      h(i, h_ebar) = eb
     end do
   end subroutine j2_hencky_lanes
 end module raccord_plasticity

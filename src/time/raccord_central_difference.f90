@@ -25,7 +25,7 @@ module raccord_central_difference
   use raccord_kinds, only: wp, i8
   use raccord_model, only: model_t, amplitude_at
   use raccord_state, only: state_t
-  use raccord_elastic_block, only: add_internal_force, watch_energy, watch_dissipation, reports_energy, swap_plastic
+  use raccord_elastic_block, only: add_internal_force, watch_energy, watch_dissipation, reports_energy
   use raccord_material, only: KIN_FINITE, MAT_J2
   implicit none
   private
@@ -390,19 +390,10 @@ contains
   subroutine advance_state(state)
     type(state_t), intent(inout) :: state
     real(wp), allocatable :: spare(:,:)
-    integer :: ib, k
     call move_alloc(state%u_prev, spare)
     call move_alloc(state%u, state%u_prev)
     call move_alloc(state%u_next, state%u)
     call move_alloc(spare, state%u_next)
-    ! j2 bodies: the returns at u(n) are final
-    if (allocated(state%plastic)) then
-      do ib = 1, size(state%plastic, 2)
-        do k = 1, size(state%plastic, 1)
-          if (allocated(state%plastic(k, ib)%old)) call swap_plastic(state%plastic(k, ib))
-        end do
-      end do
-    end if
     state%step = state%step + 1_i8
     if (state%adaptive) then
       state%time = state%time + state%dt

@@ -85,7 +85,7 @@ contains
       do e = 1, blk%nel
         ic = (e - 1)/32 + 1
         il = e - (ic - 1)*32
-        if (maxval(pl%old(il, h_ebar, :, ic)) > 0.0_wp) then
+        if (maxval(pl%h(il, h_ebar, :, ic)) > 0.0_wp) then
           x = 0.25_wp*sum(run%mesh%x(:, blk%conn(1:4, e)), dim=2)
           c = max(c, norm2(x))
         end if
