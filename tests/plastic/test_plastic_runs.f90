@@ -18,7 +18,8 @@ program test_plastic_runs
   call run_tests('plastic_runs', [ &
     new_test('small-strain j2 Q4: confined load past reverse yield and back', test_small_q4), &
     new_test('small-strain j2 Q8: confined load and unload, no reverse yield', test_small_q8), &
-    new_test('finite-strain j2 Q4: confined compression to l = 0.7 and back', test_finite_q4)])
+    new_test('finite-strain j2 Q4: confined compression to l = 0.7 and back', test_finite_q4), &
+    new_test('finite-strain j2 Q8: confined compression to l = 0.8 and back', test_finite_q8)])
 
 contains
 
@@ -136,4 +137,8 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call check_cycle(failure, 'j2_finite_q4', 'finite', 'block.msh', -0.3_wp, log(0.7_wp), 0.0_wp, 1.0e-3_wp)
   end subroutine test_finite_q4
+  subroutine test_finite_q8(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call check_cycle(failure, 'j2_finite_q8', 'finite', 'block_q8.msh', -0.2_wp, log(0.8_wp), 0.0_wp, 1.0e-3_wp)
+  end subroutine test_finite_q8
 end program test_plastic_runs
