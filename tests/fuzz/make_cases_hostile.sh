@@ -4,8 +4,8 @@
 # edit_lines, rng) and variables (seeds, cases, c).
 #
 #   sizes     counts that would size an allocation: Gmsh header and block
-#             counts, Abaqus GENERATE ranges of billions, a history table
-#             of billions of rows                                         2
+#             counts, Abaqus GENERATE ranges of billions; a history of
+#             trillions of rows (more than the disk holds)                2
 #   overflow  t_end / dt beyond what a step counter can count            2
 #   paths     empty -o or scene argument (1); the output stem locked by
 #             another run (4)                                             1, 4
@@ -52,11 +52,13 @@ size_case generate-elset-step plate.inp "ELSET GENERATE 1, 2147483647, 3" GENERA
   '$0 == "1, 3, 1" { $0 = "1, 2147483647, 3" } { print }'
 size_case generate-nset-2e9 plate.inp "an NSET GENERATE 1, 2000000000" GENERATE \
   '{ print } $0 == "1, 5" { print "*NSET, NSET=huge, GENERATE"; print "1, 2000000000" }'
-# A history row per step of a run of billions of steps.
+# A history row per step of a run of trillions of steps: the history is
+# streamed to disk (no memory grows with the steps), but its files would
+# not fit on any disk: refused before the run starts.
 for d in plate.nml contact.nml; do
-  new_case "sizes.$d.history-every-step" sizes bad 2 "$d: t_end = 1e3 (billions of steps) with history_every = 1"
+  new_case "sizes.$d.history-every-step" sizes bad 2 "$d: t_end = 1e6 (trillions of steps) with history_every = 1"
   cp "$seeds/$d" "$seeds/$(mesh_of "$d")" "$c/"
-  set_key "$c/$d" t_end 1.0e3
+  set_key "$c/$d" t_end 1.0e6
   set_key "$c/$d" history_every 1
   set_args -o out "$d"
   set_names history_every

@@ -16,6 +16,7 @@ program test_results_io
     new_test('results: incomplete close', test_incomplete), &
     new_test('results: node order, body grids, surfaces', test_order_surfaces), &
     new_test('results: misuse and bad paths', test_results_errors), &
+    new_test('results: growing table in blocks, cut back', test_growing_table), &
     new_test('history: header, rows, names', test_history)])
 
 contains
@@ -552,6 +553,71 @@ contains
     call results_close(res, .false., err, reason='test')
     call check(failure, .not. err%failed(), 'close after errors: ' // message(err))
   end subroutine test_results_errors
+
+  !> A growing table (the history of a run, issue #18): rows appended in
+  !> blocks across chunk boundaries read back in order; cut back to a row
+  !> count and continued as a resumed run does; a longer cut, a table of
+  !> another width or a missing one is refused with EXIT_INPUT.
+  subroutine test_growing_table(failure)
+    use raccord_kinds, only: wp, i8
+    use raccord_error, only: error_t, EXIT_INPUT
+    use raccord_results, only: results_t, results_open, results_close, results_create_table, &
+      results_append_table, results_truncate_table
+    use raccord_h5, only: h5_acquire, h5_release
+    use raccord_h5_verify, only: h5_verify_tree
+    use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
+    type(failure_t), allocatable, intent(out) :: failure
+    type(results_t) :: res
+    type(error_t) :: err, e2
+    real(wp) :: rows(3, 20)
+    real(wp), allocatable :: got(:,:)
+    integer(hid_t) :: file
+    integer :: r, hdferr, ndata
+    do r = 1, 20
+      rows(:, r) = [0.5_wp*r, real(r, wp), -1.0e-3_wp*r*r]
+    end do
+    call results_open(res, 'out_table/run', err)
+    call results_create_table(res, '/history', [character(len=8) :: 'time', 'step', 'energy'], 4, err)
+    call results_append_table(res, '/history', rows(:, 1:3), err)     ! inside the first chunk
+    call results_append_table(res, '/history', rows(:, 4:12), err)    ! across two chunk boundaries
+    call results_append_table(res, '/history', rows(:, 13:12), err)   ! nothing
+    call check(failure, .not. err%failed(), 'appending: ' // message(err))
+    ! a resumed run: cut back to 7 rows, then go on with rows 8..10
+    call results_truncate_table(res, '/history', 3, 7_i8, err)
+    call results_append_table(res, '/history', rows(:, 8:10), err)
+    call check(failure, .not. err%failed(), 'cut back and continued: ' // message(err))
+    call results_truncate_table(res, '/history', 3, 11_i8, e2)
+    call check(failure, e2%code == EXIT_INPUT .and. index(e2%message, '10 rows, fewer than the 11') > 0, &
+      'a cut to more rows than there are is refused: ' // message(e2))
+    call e2%clear()
+    call results_truncate_table(res, '/history', 4, 5_i8, e2)
+    call check(failure, e2%code == EXIT_INPUT .and. index(e2%message, 'not a table of 4 columns') > 0, &
+      'a table of another width is refused: ' // message(e2))
+    call e2%clear()
+    call results_truncate_table(res, '/nothing', 3, 0_i8, e2)
+    call check(failure, e2%code == EXIT_INPUT .and. index(e2%message, 'has no table "/nothing"') > 0, &
+      'a missing table is refused: ' // message(e2))
+    call results_close(res, .true., err)
+    call check(failure, .not. err%failed(), 'close: ' // message(err))
+    if (allocated(failure)) return
+    call h5_acquire(err)
+    call h5fopen_f('out_table/run.h5', H5F_ACC_RDONLY_F, file, hdferr)
+    if (hdferr /= 0) then
+      call fail_now(failure, 'cannot open out_table/run.h5')
+      return
+    end if
+    call read_real_2d(file, '/history', got, failure)
+    if (.not. allocated(failure)) then
+      call check(failure, size(got, 1) == 3 .and. size(got, 2) == 10, '/history is 10 rows of 3: (' // &
+        itoa(size(got, 1)) // ', ' // itoa(size(got, 2)) // ')')
+      if (.not. allocated(failure)) call check(failure, all(got == rows(:, 1:10)), '/history holds rows 1..10 in order')
+    end if
+    ndata = 0
+    call h5_verify_tree(file, '/', 'out_table/run.h5', ndata, err)
+    call check(failure, .not. err%failed(), 'the file verifies: ' // message(err))
+    call h5fclose_f(file, hdferr)
+    call h5_release(err)
+  end subroutine test_growing_table
 
   subroutine test_history(failure)
     use raccord_kinds, only: wp
