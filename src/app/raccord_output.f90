@@ -25,7 +25,7 @@ module raccord_output
   use raccord_files, only: rename_file, file_size, truncate_file
   use raccord_h5_superblock, only: h5_clear_write_flags
   use raccord_deck, only: write_scene
-  use raccord_machine, only: free_disk_bytes
+  use raccord_machine, only: free_disk_bytes, physical_memory_bytes
   use raccord_paths, only: path_dir
   implicit none
   private
@@ -98,6 +98,8 @@ contains
     call prepare_outputs(out, scene, model, plan, pairs, stem, err)
     if (err%failed()) return
     call check_history_room(out, scene, plan, stem, err)
+    if (err%failed()) return
+    call check_frame_count(scene, model, plan, pairs, stem, err)
     if (err%failed()) return
     call results_open(out%res, stem, err)
     if (err%failed()) return
@@ -176,6 +178,55 @@ contains
       str(real(total, wp)/1.0e9_wp, 3) // ' GB): set history_every >= ' // str(plan%nsteps/fit + 1) // &
       ' (or 0 for 1000 rows)')
   end subroutine check_history_room
+
+  !> Result frames are due by time (&output frames over t_end), at most one
+  !> per step: min(frames, steps) + 2 of them (frames + 2 with a variable
+  !> step, whose step count is an estimate). Their number is checked before
+  !> the run: the results file numbers frames with six digits (/frames/NNNNNN),
+  !> each keeps a record of about FRAME_RECORD_BYTES for the XDMF written at
+  !> the end (refused beyond an eighth of the memory), and their data above
+  !> a GiB must fit in the whole file system of the output folder.
+  subroutine check_frame_count(scene, model, plan, pairs, stem, err)
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=*), intent(in) :: stem
+    type(error_t), intent(inout) :: err
+    integer(i8), parameter :: MAX_FRAMES = 999999, FRAME_RECORD_BYTES = 1024, GIB = 1024_i8**3
+    integer(i8) :: nframe, frame_bytes, free, total, budget
+    integer :: k
+    character(len=:), allocatable :: folder, what
+    nframe = int(scene%output%frames, i8) + 2
+    if (.not. model%has_finite) nframe = min(nframe, plan%nsteps + 2)
+    ! values per node: displacement, velocity, reaction (3 stored each), stress and strain (4)
+    frame_bytes = 4096_i8 + 8_i8*int(model%nnode, i8)*17_i8
+    do k = 1, size(pairs)
+      frame_bytes = frame_bytes + 8_i8*(9_i8*pairs(k)%slave%nnode + 2_i8*pairs(k)%master%nnode)
+    end do
+    what = 'scene ' // scene%path // ': &output frames = ' // str(scene%output%frames) // ' over ' // &
+      str(plan%nsteps) // ' steps makes up to ' // str(nframe) // ' result frames'
+    budget = physical_memory_bytes()/8_i8
+    if (nframe > MAX_FRAMES) then
+      call raise_error(err, EXIT_INPUT, what // ', more than the ' // str(MAX_FRAMES) // ' a results file ' // &
+        'numbers (six digits): set frames <= ' // str(MAX_FRAMES - 2))
+      return
+    end if
+    if (nframe > budget/FRAME_RECORD_BYTES) then
+      call raise_error(err, EXIT_INPUT, what // ', whose records for the XDMF take more than the ' // &
+        str(real(budget, wp)/1.0e9_wp, 3) // ' GB (an eighth of this machine''s memory) they may: set frames <= ' // &
+        str(budget/FRAME_RECORD_BYTES - 2))
+      return
+    end if
+    folder = path_dir(stem)
+    if (len(folder) == 0) folder = '.'
+    free = free_disk_bytes(folder, total)
+    if (free < 0 .or. total <= 0) return
+    if (nframe <= total/frame_bytes .or. nframe <= GIB/frame_bytes) return
+    call raise_error(err, EXIT_INPUT, what // ' of about ' // str(real(frame_bytes, wp)/1.0e6_wp, 3) // &
+      ' MB, more than the whole file system of ' // folder // ' holds (' // str(real(total, wp)/1.0e9_wp, 3) // &
+      ' GB): set frames <= ' // str(max(1_i8, total/frame_bytes - 2)))
+  end subroutine check_frame_count
 
   !> Settings and scratch of the outputs, for a new or a resumed run.
   subroutine prepare_outputs(out, scene, model, plan, pairs, stem, err)

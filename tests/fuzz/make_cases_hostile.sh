@@ -5,7 +5,8 @@
 #
 #   sizes     counts that would size an allocation: Gmsh header and block
 #             counts, Abaqus GENERATE ranges of billions; a history of
-#             trillions of rows (more than the disk holds)                2
+#             trillions of rows (more than the disk holds), millions of
+#             result frames (a frame per step is fine on a short run)     2, valid
 #   overflow  t_end / dt beyond what a step counter can count            2
 #   paths     empty -o or scene argument (1); the output stem locked by
 #             another run (4)                                             1, 4
@@ -62,6 +63,22 @@ for d in plate.nml contact.nml; do
   set_key "$c/$d" history_every 1
   set_args -o out "$d"
   set_names history_every
+done
+
+# Result frames are numbered with six digits and each keeps a record for
+# the XDMF: frames = 2e9 over millions of steps is refused naming frames;
+# over the seed's few steps it is a frame per step (valid).
+for d in plate.nml contact.nml; do
+  new_case "sizes.$d.frames-2e9-long" sizes bad 2 "$d: t_end = 1 (millions of steps), frames = 2000000000"
+  cp "$seeds/$d" "$seeds/$(mesh_of "$d")" "$c/"
+  set_key "$c/$d" t_end 1.0
+  set_key "$c/$d" frames 2000000000
+  set_args -o out "$d"
+  set_names frames
+  new_case "sizes.$d.frames-2e9-short" sizes valid 0 "$d: frames = 2000000000 over its few steps (a frame per step)"
+  cp "$seeds/$d" "$seeds/$(mesh_of "$d")" "$c/"
+  set_key "$c/$d" frames 2000000000
+  set_args -o out "$d"
 done
 
 # Files without end of line: /dev/zero as the deck and as the mesh.
