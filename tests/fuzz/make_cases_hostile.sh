@@ -331,3 +331,20 @@ cp "$seeds/plate.nml" "$seeds/plate.msh" "$c/"
 set_args -o out plate.nml
 set_setup disk_full_now
 set_names "No space left"
+# An *INCLUDE cycle: named as such, not as the runtime's "File already opened".
+new_case messages.plate.inp.include-self messages bad 2 "plate.inp includes itself"
+d=$(seed_pair plate.inp)
+{ echo "*INCLUDE, INPUT=plate.inp"; cat "$seeds/plate.inp"; } > "$c/plate.inp"
+set_args -o out "$d"
+set_names "includes itself"
+new_case messages.plate.inp.include-cycle messages bad 2 "plate.inp includes b.inp, which includes ./plate.inp"
+d=$(seed_pair plate.inp)
+{ echo "*INCLUDE, INPUT=b.inp"; cat "$seeds/plate.inp"; } > "$c/plate.inp"
+echo "*INCLUDE, INPUT=./plate.inp" > "$c/b.inp"
+set_args -o out "$d"
+set_names "includes itself"
+# An integer key beyond 32 bits: the hint names a whole number and its range.
+msg_case checkpoint-every-2e19 plate.nml "whole number from 0 to 2147483647" "&run checkpoint_every = 99999999999999999999"
+add_to_group "$c/plate.nml" run "checkpoint_every = 99999999999999999999"
+msg_case frames-3e9 plate.nml "whole number from 0 to 2147483647" "&output frames = 3000000000"
+set_key "$c/plate.nml" frames 3000000000
