@@ -660,7 +660,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: ib, k, j
 
-    call results_begin_frame(out%res, int(state%step), state%time, err)
+    call results_begin_frame(out%res, state%step, state%time, err)
     if (err%failed()) return
     call results_write_nodal(out%res, 'displacement', state%u, err)
     if (err%failed()) return

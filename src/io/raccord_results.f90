@@ -31,7 +31,7 @@ module raccord_results
   use raccord_h5_verify, only: h5_verify_tree
   use raccord_h5, only: h5_acquire, h5_release, h5_create_file, h5_delete_link, h5_link_exists, &
     h5_write_real, h5_write_int, h5_write_text, h5_attr_real, h5_attr_int, h5_attr_text, &
-    h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
+    h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_i8, h5_truncate_growing, h5_attr_i8
   use raccord_h5_read, only: h5_read_real, h5_read_attr_text, h5_dims
   use raccord_h5_table, only: h5_create_table, h5_append_rows, h5_truncate_rows
   use raccord_xdmf, only: xdmf_block_t, xdmf_field_t, xdmf_frame_t, xdmf_surface_t, write_xdmf, &
@@ -75,9 +75,14 @@ module raccord_results
     type(xdmf_surface_t), allocatable :: surfaces(:)
     logical :: in_frame = .false.
     integer :: nframe = 0                          !< frames begun
-    integer :: step = 0                            !< step of the current frame
+    integer(i8) :: step = 0                        !< step of the current frame (64-bit: a long run passes 2**31)
     type(xdmf_frame_t), allocatable :: frames(:)
   end type results_t
+
+  !> Start an output frame at a step given as a default or a 64-bit integer.
+  interface results_begin_frame
+    module procedure begin_frame_i8, begin_frame_int
+  end interface results_begin_frame
 
   !> Write a real(wp) array of rank 1 or 2 at an HDF5 path.
   interface results_write_array
@@ -226,7 +231,7 @@ contains
     if (err%failed()) return
     call h5_write_text(root, '/status', 'running', res%where, err)
     call h5_create_growing(root, '/frames/times', .true., res%where, err)
-    call h5_create_growing(root, '/frames/steps', .false., res%where, err)
+    call h5_create_growing(root, '/frames/steps', .false., res%where, err, wide=.true.)
     call flush_file(res, 'the file header', err)
   end subroutine results_open
 
@@ -308,9 +313,9 @@ contains
 
   !> Start output frame number nframe (group /frames/NNNNNN, six digits from
   !> 000000) with its step and time as attributes.
-  subroutine results_begin_frame(res, step, time, err)
+  subroutine begin_frame_i8(res, step, time, err)
     type(results_t), intent(inout) :: res
-    integer, intent(in) :: step
+    integer(i8), intent(in) :: step
     real(wp), intent(in) :: time
     type(error_t), intent(inout) :: err
     type(xdmf_frame_t), allocatable :: grown(:)
@@ -335,7 +340,7 @@ contains
       return
     end if
     call h5_attr_real(grp, 'time', time, res%where, err)
-    call h5_attr_int(grp, 'step', step, res%where, err)
+    call h5_attr_i8(grp, 'step', step, res%where, err)
     call h5gclose_f(grp, hdferr)
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close group "' // path // '" in ' // res%where)
     if (err%failed()) return
@@ -351,7 +356,15 @@ contains
     allocate(res%frames(res%nframe)%fields(4))
     res%step = step
     res%in_frame = .true.
-  end subroutine results_begin_frame
+  end subroutine begin_frame_i8
+
+  subroutine begin_frame_int(res, step, time, err)
+    type(results_t), intent(inout) :: res
+    integer, intent(in) :: step
+    real(wp), intent(in) :: time
+    type(error_t), intent(inout) :: err
+    call begin_frame_i8(res, int(step, i8), time, err)
+  end subroutine begin_frame_int
 
   !> Write a nodal field values(ncomp, nnode) of the current frame to
   !> /frames/NNNNNN/<name>. Stored as h5dump dims (nnode) for ncomp = 1,
@@ -486,7 +499,7 @@ contains
     end if
     res%in_frame = .false.
     call h5_append_real(res%file, '/frames/times', res%frames(res%nframe)%time, res%where, err)
-    call h5_append_int(res%file, '/frames/steps', res%step, res%where, err)
+    call h5_append_i8(res%file, '/frames/steps', res%step, res%where, err)
     call flush_file(res, 'frame ' // frame_label(res%nframe - 1), err)
   end subroutine results_end_frame
 

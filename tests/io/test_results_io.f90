@@ -17,6 +17,7 @@ program test_results_io
     new_test('results: node order, body grids, surfaces', test_order_surfaces), &
     new_test('results: misuse and bad paths', test_results_errors), &
     new_test('results: growing table in blocks, cut back', test_growing_table), &
+    new_test('results: a step past 2**31 is kept', test_long_step), &
     new_test('history: header, rows, names', test_history)])
 
 contains
@@ -618,6 +619,59 @@ contains
     call h5fclose_f(file, hdferr)
     call h5_release(err)
   end subroutine test_growing_table
+
+  !> A run may take more than 2**31 steps (up to 2**53): a frame's step is
+  !> stored as a 64-bit integer, in /frames/steps and in its attribute (it
+  !> was converted to a default integer and wrapped, issue #18).
+  subroutine test_long_step(failure)
+    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
+    use, intrinsic :: iso_fortran_env, only: int64
+    use raccord_kinds, only: wp, i8
+    use raccord_error, only: error_t
+    use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
+      results_begin_frame, results_write_nodal, results_end_frame, results_close
+    use raccord_h5, only: h5_acquire, h5_release
+    use hdf5, only: hid_t, hsize_t, h5fopen_f, h5fclose_f, h5dopen_f, h5dread_f, h5dclose_f, h5aopen_by_name_f, &
+      h5aread_f, h5aclose_f, h5kind_to_type, H5F_ACC_RDONLY_F, H5_INTEGER_KIND
+    type(failure_t), allocatable, intent(out) :: failure
+    type(results_t) :: res
+    type(error_t) :: err
+    real(wp), allocatable :: x(:,:)
+    type(result_block_t), allocatable :: blocks(:)
+    integer(i8), parameter :: big = 3000000000_i8
+    integer(i8), target :: steps(2), attr_step(1)
+    integer(hid_t) :: file, dset, attr
+    type(c_ptr) :: ptr
+    integer :: hdferr
+    call small_mesh(x, blocks)
+    call results_open(res, 'out_long/run', err)
+    call results_write_mesh(res, x, blocks, err)
+    call results_begin_frame(res, 0, 0.0_wp, err)
+    call results_write_nodal(res, 'displacement', 0.0_wp*x, err)
+    call results_end_frame(res, err)
+    call results_begin_frame(res, big, 1.0_wp, err)
+    call results_write_nodal(res, 'displacement', 0.0_wp*x, err)
+    call results_end_frame(res, err)
+    call results_close(res, .true., err)
+    call check(failure, .not. err%failed(), 'writing: ' // message(err))
+    if (allocated(failure)) return
+    call h5_acquire(err)
+    call h5fopen_f('out_long/run.h5', H5F_ACC_RDONLY_F, file, hdferr)
+    steps = -1
+    attr_step = -1
+    call h5dopen_f(file, '/frames/steps', dset, hdferr)
+    ptr = c_loc(steps)
+    if (hdferr == 0) call h5dread_f(dset, h5kind_to_type(int64, H5_INTEGER_KIND), ptr, hdferr)
+    call h5dclose_f(dset, hdferr)
+    call h5aopen_by_name_f(file, '/frames/000001', 'step', attr, hdferr)
+    ptr = c_loc(attr_step)
+    if (hdferr == 0) call h5aread_f(attr, h5kind_to_type(int64, H5_INTEGER_KIND), ptr, hdferr)
+    call h5aclose_f(attr, hdferr)
+    call h5fclose_f(file, hdferr)
+    call h5_release(err)
+    call check(failure, steps(1) == 0 .and. steps(2) == big, '/frames/steps = [0, 3000000000]')
+    call check(failure, attr_step(1) == big, 'the step attribute of frame 000001 is 3000000000')
+  end subroutine test_long_step
 
   subroutine test_history(failure)
     use raccord_kinds, only: wp
