@@ -25,6 +25,9 @@ module raccord_h5_read
 
   !> Longest text attribute read (raccord writes a few dozen characters).
   integer(size_t), parameter :: MAX_ATTR_TEXT = 65536
+  !> Longest text dataset read (the echoed scene: kilobytes, a few MB with
+  !> long amplitude tables).
+  integer(size_t), parameter :: MAX_TEXT = 256_size_t*1024_size_t*1024_size_t
 
   !> Read a real(wp) dataset of rank 1 or 2 into an array of the expected shape.
   interface h5_read_real
@@ -147,6 +150,14 @@ contains
     call h5dget_type_f(dset, ftype, hdferr)
     if (hdferr == 0) call h5tget_size_f(ftype, n, hdferr)
     if (hdferr == 0) call h5tclose_f(ftype, hdferr)
+    ! the length comes from the file: checked before it sizes the text
+    if (hdferr == 0 .and. (n < 1 .or. n > MAX_TEXT)) then
+      call close_dataset(dset, path, where, err)
+      call raise_error(err, EXIT_INPUT, 'the text "' // path // '" in ' // where // ' declares ' // &
+        trim(size_text(n)) // ' characters, more than the ' // trim(size_text(MAX_TEXT)) // &
+        ' raccord writes: the file is damaged or not raccord''s')
+      return
+    end if
     if (hdferr == 0) then
       deallocate(text)
       allocate(character(len=int(n)) :: text)
@@ -339,4 +350,10 @@ contains
       s = s // trim(buf)
     end do
   end function shape_text
+
+  pure function size_text(n) result(s)
+    integer(size_t), intent(in) :: n
+    character(len=24) :: s
+    write(s, '(i0)') n
+  end function size_text
 end module raccord_h5_read
