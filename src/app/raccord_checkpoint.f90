@@ -32,14 +32,15 @@ module raccord_checkpoint
   use raccord_h5, only: h5_acquire, h5_release, h5_create_file, h5_write_real, h5_write_int, h5_write_text, h5_attr_text, &
     h5_attr_int, h5_link_exists
   use raccord_crc32, only: crc32_t, crc_add, crc_value
-  use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8
+  use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8, &
+    h5_read_attr_int
   implicit none
   private
 
   public :: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path, scene_identity
 
   !> Version of the checkpoint layout; a checkpoint of another version is refused.
-  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 2
+  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 3
   character(len=*), parameter :: FORMAT_NAME = 'raccord checkpoint'
   !> Keys that do not change the results: a restart may change them.
   character(len=*), parameter :: FREE_KEYS(*) = [character(len=20) :: 'output_dir', 'wall_clock', &
@@ -150,10 +151,10 @@ contains
       call h5_write_real(file, g // 'residual_max', [pairs(k)%residual_max], where, err)
       call h5_write_i8(file, g // 'profile_bytes', [mark%profile_bytes(k)], where, err)
     end do
-    ! Outputs: frames and history rows so far, and the files' lengths.
-    call h5_write_i8(file, '/output/counters', [int(mark%frames_written, i8), int(mark%nrow, i8), &
-      mark%history_bytes], where, err)
-    call h5_write_real(file, '/output/history_table', mark%table, where, err)
+    ! Outputs: frames and history rows so far (the rows themselves are in
+    ! /history of the results file), and the files' lengths.
+    call h5_write_i8(file, '/output/counters', [int(mark%frames_written, i8), mark%nrow, &
+      mark%history_bytes, int(mark%ncol, i8)], where, err)
     ! Checksums: of the running text files up to their recorded lengths,
     ! and of everything above (checkpoint_crc), verified by a restart.
     allocate(file_crc(1 + size(pairs)))
@@ -204,7 +205,7 @@ contains
     type(error_t), intent(inout) :: err
     integer(hid_t) :: file
     character(len=:), allocatable :: where, text, identity, g
-    integer(i8) :: counters(4), two(2), three(3), one(1)
+    integer(i8) :: counters(4), two(2), four(4), one(1)
     real(wp) :: td(2), en(10), r1(1)
     real(wp), allocatable :: flat(:,:)
     integer :: k, ib, kb
@@ -296,18 +297,22 @@ contains
         pairs(k)%residual_max = r1(1)
         mark%profile_bytes(k) = one(1)
       end do
-      call h5_read_i8(file, '/output/counters', three, where, err)
+      call h5_read_i8(file, '/output/counters', four, where, err)
       if (err%failed()) exit steps
-      mark%frames_written = int(three(1))
-      mark%nrow = int(three(2))
-      mark%history_bytes = three(3)
-      if (mark%nrow < 0 .or. mark%frames_written < 0 .or. mark%history_bytes < 0) then
-        call raise_error(err, EXIT_INPUT, where // ' is damaged: negative output counters')
+      if (any(four < 0) .or. four(1) > huge(1)) then
+        call raise_error(err, EXIT_INPUT, where // ' is damaged: output counters ' // str(four(1)) // ', ' // &
+          str(four(2)) // ', ' // str(four(3)) // ', ' // str(four(4)))
         exit steps
       end if
-      allocate(mark%table(ncol, mark%nrow))
-      call h5_read_real(file, '/output/history_table', mark%table, where, err)
-      if (err%failed()) exit steps
+      mark%frames_written = int(four(1))
+      mark%nrow = four(2)
+      mark%history_bytes = four(3)
+      if (four(4) /= int(ncol, i8)) then
+        call raise_error(err, EXIT_INPUT, where // ' has a history of ' // str(four(4)) // ' columns, the ' // &
+          'scene makes ' // str(ncol) // '; run the scene afresh without --restart')
+        exit steps
+      end if
+      mark%ncol = ncol
       call verify_checkpoint(file, path, identity, state, pairs, mark, err)
     end block steps
     call close_checkpoint(file, where, err)
@@ -355,8 +360,7 @@ contains
       call crc_add(c, [pairs(k)%residual_max])
       call crc_add(c, [mark%profile_bytes(k)])
     end do
-    call crc_add(c, [int(mark%frames_written, i8), int(mark%nrow, i8), mark%history_bytes])
-    call crc_add(c, mark%table)
+    call crc_add(c, [int(mark%frames_written, i8), mark%nrow, mark%history_bytes, int(mark%ncol, i8)])
     call crc_add(c, file_crc)
     crc = crc_value(c)
   end function checkpoint_crc
@@ -418,7 +422,7 @@ contains
     integer(hid_t), intent(out) :: file
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: where, fmt, version
-    integer :: hdferr
+    integer :: hdferr, fv
     file = -1
     if (err%failed()) return
     where = 'checkpoint "' // path // '"'
@@ -442,7 +446,13 @@ contains
       if (fmt /= FORMAT_NAME) call raise_error(err, EXIT_INPUT, where // ' is not a raccord checkpoint (format "' // &
         fmt // '")')
     end if
-    call h5_read_attr_text(file, 'raccord_version', version, where, err)
+    call h5_read_attr_int(file, 'format_version', fv, where, err)
+    if (.not. err%failed()) then
+      if (fv /= CHECKPOINT_FORMAT_VERSION) call raise_error(err, EXIT_INPUT, where // ' has the layout of ' // &
+        'format version ' // str(fv) // ', this raccord reads version ' // str(CHECKPOINT_FORMAT_VERSION) // &
+        ' only; run the scene afresh without --restart (or finish it with the raccord that wrote it)')
+    end if
+    if (.not. err%failed()) call h5_read_attr_text(file, 'raccord_version', version, where, err)
     if (.not. err%failed()) then
       if (.not. h5_link_exists(file, '/state/u')) call raise_error(err, EXIT_INPUT, where // ' is incomplete')
     end if

@@ -3,7 +3,7 @@
 module raccord_output
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
-  use raccord_log, only: log_info, log_raw
+  use raccord_log, only: log_info, log_raw, log_warn
   use raccord_strings, only: str
   use raccord_mesh, only: nodes_per_element
   use raccord_model, only: model_t, amplitude_at
@@ -14,8 +14,9 @@ module raccord_output
   use raccord_material, only: MAT_J2
   use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
     results_write_node_set, results_begin_frame, results_write_nodal, results_end_frame, &
-    results_write_table, results_set_text, results_close, results_suspend, results_resume, results_has, &
-    results_delete, results_flush, results_add_surface, results_write_surface_frame, results_verify
+    results_set_text, results_close, results_suspend, results_resume, results_has, &
+    results_delete, results_flush, results_add_surface, results_write_surface_frame, results_verify, &
+    results_create_table, results_append_table, results_truncate_table
   use raccord_history_file, only: history_file_t, history_open, history_write, history_close, history_bytes, &
     history_suspend, history_resume
   use raccord_contact_pair, only: contact_pair_t
@@ -23,13 +24,20 @@ module raccord_output
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_results, only: results_write_array
   use raccord_files, only: rename_file, file_size, truncate_file
-  use raccord_machine, only: physical_memory_bytes
   use raccord_h5_superblock, only: h5_clear_write_flags
   use raccord_deck, only: write_scene
+  use raccord_machine, only: free_disk_bytes, physical_memory_bytes
+  use raccord_paths, only: path_dir
   implicit none
   private
 
   integer, parameter :: col_len = 40
+  !> History rows kept in memory before they are appended to /history of
+  !> the results file (and rows per chunk of it): the memory of the history
+  !> is one such block, whatever the number of steps (issue #18). Fewer rows
+  !> when there are many columns, so a block stays within 256 KiB.
+  integer, parameter :: HISTORY_BLOCK_ROWS = 256
+  integer, parameter :: HISTORY_BLOCK_VALUES = 32768
 
   !> Per-node values of a contact pair's slave surface grid in the results
   !> (doc/output-format.md, "Contact surfaces"), in the columns of
@@ -48,8 +56,9 @@ module raccord_output
     integer(i8) :: history_every = 1
     character(len=col_len), allocatable :: columns(:)
     real(wp), allocatable :: row(:)
-    real(wp), allocatable :: table(:,:)        !< history rows kept for the HDF5 copy
-    integer :: nrow = 0
+    real(wp), allocatable :: block(:,:)        !< (ncol, rows) history rows not yet in /history
+    integer :: nbuf = 0                         !< rows held in block
+    integer(i8) :: nrow = 0                     !< rows appended to /history of the results file
     real(wp), allocatable :: s_node(:,:), wsum(:), r_node(:,:)   !< frame scratch, sized once
     !> Contact frame scratch, sized once for the largest surfaces: deformed
     !> slave and master coordinates, slave values (one column per SURFACE_FIELDS).
@@ -65,8 +74,8 @@ module raccord_output
   !> go on with the same files as if it had never stopped.
   type, public :: output_mark_t
     integer :: frames_written = 0
-    integer :: nrow = 0                         !< history rows kept for the HDF5 copy
-    real(wp), allocatable :: table(:,:)         !< (ncol, nrow) those rows
+    integer(i8) :: nrow = 0                     !< rows of /history in the results file
+    integer :: ncol = 0                         !< its columns
     integer(i8) :: history_bytes = 0            !< length of <stem>.history.txt.part
     integer(i8), allocatable :: profile_bytes(:) !< length of each <stem>.contact<k>.txt.part
   end type output_mark_t
@@ -89,6 +98,10 @@ contains
 
     call prepare_outputs(out, scene, model, plan, pairs, stem, err)
     if (err%failed()) return
+    call check_history_room(out, scene, plan, stem, err)
+    if (err%failed()) return
+    call check_frame_count(scene, model, plan, pairs, stem, err)
+    if (err%failed()) return
     call results_open(out%res, stem, err)
     if (err%failed()) return
     out%is_open = .true.
@@ -104,6 +117,8 @@ contains
     call add_contact_surfaces(out, pairs, err)
     if (err%failed()) return
     call keep_resolved_scene(scene, stem, out%res, err)
+    if (err%failed()) return
+    call results_create_table(out%res, '/history', out%columns, size(out%block, 2), err)
     if (err%failed()) return
     call history_open(out%hist, stem // '.history.txt', out%columns, err)
     if (err%failed()) return
@@ -124,6 +139,96 @@ contains
     end do
   end function set_written_before
 
+  !> The history is streamed to disk, so its memory does not grow with the
+  !> run, but its files do: rows = steps / history_every, each value about
+  !> HISTORY_VALUE_BYTES in the text file and /history together. A history
+  !> of more than a GiB and larger than the whole file system of the output
+  !> folder is a scene that cannot run (refused, exit 2, before any step: it
+  !> would end with a full disk after all its steps were computed); one
+  !> larger than the free space only, or a small one on a tiny file system,
+  !> is warned of (space may be freed while it runs; a full disk stops it
+  !> with exit 4, its files kept as .incomplete). A variable step makes the
+  !> planned count an estimate: the check is a lower bound.
+  subroutine check_history_room(out, scene, plan, stem, err)
+    type(output_t), intent(in) :: out
+    type(scene_t), intent(in) :: scene
+    type(time_plan_t), intent(in) :: plan
+    character(len=*), intent(in) :: stem
+    type(error_t), intent(inout) :: err
+    integer(i8), parameter :: HISTORY_VALUE_BYTES = 33, GIB = 1024_i8**3
+    integer(i8) :: rows, row_bytes, free, total, fit
+    character(len=:), allocatable :: folder, what
+    folder = path_dir(stem)
+    if (len(folder) == 0) folder = '.'
+    free = free_disk_bytes(folder, total)
+    if (free < 0 .or. total <= 0) return
+    rows = plan%nsteps/out%history_every + 2
+    row_bytes = HISTORY_VALUE_BYTES*size(out%columns)
+    if (rows <= free/row_bytes) return
+    what = 'scene ' // scene%path // ': &output history_every = ' // str(out%history_every) // ' over ' // &
+      str(plan%nsteps) // ' steps makes ' // str(rows) // ' history rows of ' // str(size(out%columns)) // &
+      ' columns, about ' // str(real(rows, wp)*real(row_bytes, wp)/1.0e9_wp, 3) // ' GB in ' // stem // &
+      '.history.txt and ' // stem // '.h5'
+    if (rows <= total/row_bytes .or. rows <= GIB/row_bytes) then
+      call log_warn('output', what // ', more than the ' // str(real(free, wp)/1.0e9_wp, 3) // ' GB free in ' // &
+        folder // ': the run stops with a full disk (exit 4) unless space is freed')
+      return
+    end if
+    fit = max(1_i8, total/row_bytes - 2)
+    call raise_error(err, EXIT_INPUT, what // ', more than the whole file system of ' // folder // ' (' // &
+      str(real(total, wp)/1.0e9_wp, 3) // ' GB): set history_every >= ' // str(plan%nsteps/fit + 1) // &
+      ' (or 0 for 1000 rows)')
+  end subroutine check_history_room
+
+  !> Result frames are due by time (&output frames over t_end), at most one
+  !> per step: min(frames, steps) + 2 of them (frames + 2 with a variable
+  !> step, whose step count is an estimate). Their number is checked before
+  !> the run: the results file numbers frames with six digits (/frames/NNNNNN),
+  !> each keeps a record of about FRAME_RECORD_BYTES for the XDMF written at
+  !> the end (refused beyond an eighth of the memory), and their data above
+  !> a GiB must fit in the whole file system of the output folder.
+  subroutine check_frame_count(scene, model, plan, pairs, stem, err)
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=*), intent(in) :: stem
+    type(error_t), intent(inout) :: err
+    integer(i8), parameter :: MAX_FRAMES = 999999, FRAME_RECORD_BYTES = 1024, GIB = 1024_i8**3
+    integer(i8) :: nframe, frame_bytes, free, total, budget
+    integer :: k
+    character(len=:), allocatable :: folder, what
+    nframe = int(scene%output%frames, i8) + 2
+    if (.not. model%has_finite) nframe = min(nframe, plan%nsteps + 2)
+    ! values per node: displacement, velocity, reaction (3 stored each), stress and strain (4)
+    frame_bytes = 4096_i8 + 8_i8*int(model%nnode, i8)*17_i8
+    do k = 1, size(pairs)
+      frame_bytes = frame_bytes + 8_i8*(9_i8*pairs(k)%slave%nnode + 2_i8*pairs(k)%master%nnode)
+    end do
+    what = 'scene ' // scene%path // ': &output frames = ' // str(scene%output%frames) // ' over ' // &
+      str(plan%nsteps) // ' steps makes up to ' // str(nframe) // ' result frames'
+    budget = physical_memory_bytes()/8_i8
+    if (nframe > MAX_FRAMES) then
+      call raise_error(err, EXIT_INPUT, what // ', more than the ' // str(MAX_FRAMES) // ' a results file ' // &
+        'numbers (six digits): set frames <= ' // str(MAX_FRAMES - 2))
+      return
+    end if
+    if (nframe > budget/FRAME_RECORD_BYTES) then
+      call raise_error(err, EXIT_INPUT, what // ', whose records for the XDMF take more than the ' // &
+        str(real(budget, wp)/1.0e9_wp, 3) // ' GB (an eighth of this machine''s memory) they may: set frames <= ' // &
+        str(budget/FRAME_RECORD_BYTES - 2))
+      return
+    end if
+    folder = path_dir(stem)
+    if (len(folder) == 0) folder = '.'
+    free = free_disk_bytes(folder, total)
+    if (free < 0 .or. total <= 0) return
+    if (nframe <= total/frame_bytes .or. nframe <= GIB/frame_bytes) return
+    call raise_error(err, EXIT_INPUT, what // ' of about ' // str(real(frame_bytes, wp)/1.0e6_wp, 3) // &
+      ' MB, more than the whole file system of ' // folder // ' holds (' // str(real(total, wp)/1.0e9_wp, 3) // &
+      ' GB): set frames <= ' // str(max(1_i8, total/frame_bytes - 2)))
+  end subroutine check_frame_count
+
   !> Settings and scratch of the outputs, for a new or a resumed run.
   subroutine prepare_outputs(out, scene, model, plan, pairs, stem, err)
     type(output_t), intent(out) :: out
@@ -133,8 +238,7 @@ contains
     type(contact_pair_t), intent(in) :: pairs(:)
     character(len=*), intent(in) :: stem
     type(error_t), intent(inout) :: err
-    integer(i8) :: nrow_max, bytes, budget
-    integer :: k, ns, nm
+    integer :: k, ns, nm, stat
     out%stem = stem
     out%stress = scene%output%stress
     out%frame_interval = plan%t_end/real(max(1, scene%output%frames), wp)
@@ -142,31 +246,21 @@ contains
     out%history_every = int(scene%output%history_every, i8)
     if (out%history_every <= 0) out%history_every = max(1_i8, plan%nsteps/1000_i8)
     call history_columns(model, pairs, out%columns)
-    allocate(out%row(size(out%columns)))
-    ! The history rows are kept in memory for the HDF5 copy (and twice at a
-    ! checkpoint): their number is checked against the memory of the
-    ! machine before the table is allocated, never taken on trust.
-    nrow_max = plan%nsteps/out%history_every + 3
-    bytes = nrow_max*int(size(out%columns), i8)*8_i8
-    budget = physical_memory_bytes()/8_i8
-    if (nrow_max > int(huge(1), i8) .or. bytes > budget) then
-      call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &output history_every = ' // &
-        str(out%history_every) // ' over ' // str(plan%nsteps) // ' steps makes ' // str(nrow_max) // &
-        ' history rows of ' // str(size(out%columns)) // ' columns (' // str(real(bytes, wp)/1.0e9_wp, 3) // &
-        ' GB), more than the ' // str(real(budget, wp)/1.0e9_wp, 3) // ' GB (an eighth of this machine''s ' // &
-        'memory) a history may take: set history_every >= ' // &
-        str(max(1_i8, plan%nsteps/max(1_i8, budget/(8_i8*size(out%columns)) - 3) + 1)) // ' (or 0 for 1000 rows)')
-      return
-    end if
-    allocate(out%table(size(out%columns), int(nrow_max)))
-    allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode))
+    ! The history goes to the results file in blocks of rows as the run
+    ! goes on (flush_history): nothing here is sized by the number of steps.
+    allocate(out%row(size(out%columns)), out%block(size(out%columns), &
+      max(1, min(HISTORY_BLOCK_ROWS, HISTORY_BLOCK_VALUES/size(out%columns)))), stat=stat)
+    if (stat == 0) allocate(out%s_node(4, model%nnode), out%wsum(model%nnode), out%r_node(2, model%nnode), stat=stat)
     ns = 0
     nm = 0
     do k = 1, size(pairs)
       ns = max(ns, pairs(k)%slave%nnode)
       nm = max(nm, pairs(k)%master%nnode)
     end do
-    allocate(out%surf_xy(2, ns), out%surf_xm(2, nm), out%surf_values(ns, size(SURFACE_FIELDS)), out%surf_none(nm, 0))
+    if (stat == 0) allocate(out%surf_xy(2, ns), out%surf_xm(2, nm), out%surf_values(ns, size(SURFACE_FIELDS)), &
+      out%surf_none(nm, 0), stat=stat)
+    if (stat /= 0) call raise_error(err, EXIT_INPUT, 'not enough memory for the output scratch of ' // stem // &
+      ' (' // str(model%nnode) // ' nodes)')
   end subroutine prepare_outputs
 
   !> The element blocks of the results file, one per body block.
@@ -206,11 +300,13 @@ contains
     type(output_mark_t), intent(out) :: mark
     type(error_t), intent(inout) :: err
     integer :: k, ios
+    call flush_history(out, err)
+    if (err%failed()) return
     call results_flush(out%res, err)
     if (err%failed()) return
     mark%frames_written = out%frames_written
     mark%nrow = out%nrow
-    mark%table = out%table(:, 1:out%nrow)
+    mark%ncol = size(out%columns)
     mark%history_bytes = history_bytes(out%hist)
     allocate(mark%profile_bytes(size(out%profile_unit)))
     do k = 1, size(out%profile_unit)
@@ -262,11 +358,6 @@ contains
 
     call prepare_outputs(out, scene, model, plan, pairs, stem, err)
     if (err%failed()) return
-    if (mark%nrow > size(out%table, 2) .or. size(mark%table, 1) /= size(out%columns)) then
-      call raise_error(err, EXIT_INPUT, 'the checkpoint of ' // stem // ' does not fit this scene''s history ' // &
-        'table; run the scene afresh without --restart')
-      return
-    end if
     ! Every running file must be there before any is touched: a refused
     ! resume leaves them as they were.
     if (size(mark%profile_bytes) /= size(pairs)) then
@@ -314,6 +405,9 @@ contains
     call results_verify(out%res, err)     ! checksums of what is continued
     if (err%failed()) return
     out%is_open = .true.
+    ! /history: the rows up to the checkpoint (a killed run may have added more)
+    call results_truncate_table(out%res, '/history', size(out%columns), mark%nrow, err)
+    if (err%failed()) return
     call add_contact_surfaces(out, pairs, err)
     if (err%failed()) return
     do k = 1, size(pairs)
@@ -343,7 +437,6 @@ contains
     end do
     out%frames_written = mark%frames_written
     out%nrow = mark%nrow
-    out%table(:, 1:mark%nrow) = mark%table
     call system_clock(out%clock_start, out%clock_rate)
     out%clock_last = out%clock_start
   end subroutine resume_outputs
@@ -502,10 +595,10 @@ contains
       call fill_history_row(out, model, state, pairs)
       call history_write(out%hist, out%row, err)
       if (err%failed()) return
-      if (out%nrow < size(out%table, 2)) then
-        out%nrow = out%nrow + 1
-        out%table(:, out%nrow) = out%row
-      end if
+      out%nbuf = out%nbuf + 1
+      out%block(:, out%nbuf) = out%row
+      if (out%nbuf == size(out%block, 2)) call flush_history(out, err)
+      if (err%failed()) return
     end if
     ! Frame k is due at the first step whose time reaches k * interval.
     if (state%time >= (real(out%frames_written, wp) - 1.0e-9_wp)*out%frame_interval .or. last) then
@@ -518,6 +611,18 @@ contains
       call log_progress(out, state)
     end if
   end subroutine write_due_outputs
+
+  !> Append the buffered history rows to /history of the results file
+  !> (when the block is full, at each frame, at a checkpoint and at the end).
+  subroutine flush_history(out, err)
+    type(output_t), intent(inout) :: out
+    type(error_t), intent(inout) :: err
+    if (out%nbuf == 0) return
+    call results_append_table(out%res, '/history', out%block(:, 1:out%nbuf), err)
+    if (err%failed()) return
+    out%nrow = out%nrow + out%nbuf
+    out%nbuf = 0
+  end subroutine flush_history
 
   subroutine fill_history_row(out, model, state, pairs)
     type(output_t), intent(inout) :: out
@@ -564,7 +669,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: ib, k, j
 
-    call results_begin_frame(out%res, int(state%step), state%time, err)
+    call results_begin_frame(out%res, state%step, state%time, err)
     if (err%failed()) return
     call results_write_nodal(out%res, 'displacement', state%u, err)
     if (err%failed()) return
@@ -615,6 +720,9 @@ contains
       call write_contact_frame(out, k, pairs(k), model, state, err)
       if (err%failed()) return
     end do
+    ! the history so far goes with the frame, so a killed run keeps both
+    call flush_history(out, err)
+    if (err%failed()) return
     call results_end_frame(out%res, err)
     if (err%failed()) return
     out%frames_written = out%frames_written + 1
@@ -759,7 +867,7 @@ contains
     if (.not. out%is_open) return
     out%is_open = .false.
     ! Each file is closed even when another failed, so none is left open.
-    call results_write_table(out%res, '/history', out%columns, out%table(:, 1:out%nrow), e1)
+    call flush_history(out, e1)
     ok = complete .and. .not. e1%failed()
     call history_close(out%hist, ok, e2)
     ok = ok .and. .not. e2%failed()

@@ -17,7 +17,8 @@ module raccord_verify
   use raccord_crc32, only: crc32_t, crc_add, crc_value
   use raccord_files, only: file_exists, crc_of_file
   use raccord_h5, only: h5_acquire, h5_release, h5_link_exists
-  use raccord_h5_read, only: h5_read_attr_text
+  use raccord_h5_read, only: h5_read_attr_text, h5_read_attr_int
+  use raccord_checkpoint, only: CHECKPOINT_FORMAT_VERSION
   use raccord_h5_verify, only: h5_verify_tree, h5_read_raw
   implicit none
   private
@@ -32,7 +33,7 @@ contains
     character(len=:), allocatable, intent(out) :: report
     type(error_t), intent(inout) :: err
     integer(hid_t) :: file
-    integer :: hdferr, ndata
+    integer :: hdferr, ndata, version
     character(len=:), allocatable :: where, fmt, extra
     type(error_t) :: cerr
     report = ''
@@ -59,7 +60,14 @@ contains
     ndata = 0
     call h5_verify_tree(file, '/', where, ndata, err)
     extra = ''
-    if (.not. err%failed() .and. fmt == 'raccord checkpoint') call verify_checkpoint_crc(file, path, extra, err)
+    if (.not. err%failed() .and. fmt == 'raccord checkpoint') then
+      ! the checksum covers the datasets of this layout only
+      call h5_read_attr_int(file, 'format_version', version, where, err)
+      if (.not. err%failed() .and. version /= CHECKPOINT_FORMAT_VERSION) call raise_error(err, EXIT_INPUT, &
+        where // ' reads back, but it is a checkpoint of format version ' // str(version) // ', this raccord ' // &
+        'writes and reads version ' // str(CHECKPOINT_FORMAT_VERSION))
+      if (.not. err%failed()) call verify_checkpoint_crc(file, path, extra, err)
+    end if
     call h5fclose_f(file, hdferr)
     call h5_release(cerr)
     if (err%failed()) return
@@ -106,7 +114,6 @@ contains
       call add(c, g // 'profile_bytes')
     end do
     call add(c, '/output/counters')
-    call add(c, '/output/history_table')
     call add(c, '/output/file_crc')
     if (err%failed()) return
     call raw_i8('/crc32', stored, 1)
@@ -118,9 +125,9 @@ contains
       return
     end if
     ! The running text files, when the stopped run's .part files are there.
-    allocate(file_crc(1 + npair), counters(3))
+    allocate(file_crc(1 + npair), counters(4))
     call raw_i8('/output/file_crc', file_crc, 1 + npair)
-    call raw_i8('/output/counters', counters, 3)
+    call raw_i8('/output/counters', counters, 4)
     if (err%failed()) return
     stem = path
     if (len(path) > len(suffix)) stem = path(1:len(path) - len(suffix))

@@ -16,7 +16,10 @@ module raccord_h5
     H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_NATIVE_CHARACTER, H5T_STR_NULLPAD_F, &
     H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, H5P_DATASET_CREATE_F, H5P_FILE_ACCESS_F, &
     H5F_ACC_TRUNC_F, H5F_LIBVER_V110_F, H5F_LIBVER_LATEST_F, H5P_DEFAULT_F
-  use raccord_kinds, only: wp
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
+  use, intrinsic :: iso_fortran_env, only: int64
+  use hdf5, only: h5kind_to_type, H5_INTEGER_KIND
+  use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO
   use raccord_crc32, only: crc32_t, crc_add, crc_value, crc_hex
   implicit none
@@ -25,8 +28,8 @@ module raccord_h5
   public :: h5_acquire, h5_release, h5_create_file
   public :: h5_ensure_groups, h5_link_exists, h5_delete_link
   public :: h5_write_real, h5_write_int, h5_write_text
-  public :: h5_attr_real, h5_attr_int, h5_attr_text, h5_attr_text_list
-  public :: h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
+  public :: h5_attr_real, h5_attr_int, h5_attr_i8, h5_attr_text, h5_attr_text_list
+  public :: h5_create_growing, h5_append_real, h5_append_int, h5_append_i8, h5_truncate_growing
 
   !> Write a real(wp) dataset of rank 1 or 2.
   interface h5_write_real
@@ -256,12 +259,14 @@ contains
   ! --- growing 1D datasets (one entry per frame) ---------------------------
 
   !> Create an empty 1D dataset with unlimited length, so a killed run
-  !> still has the entries of every frame it flushed.
-  subroutine h5_create_growing(loc, path, is_real, where, err)
+  !> still has the entries of every frame it flushed: reals, or integers
+  !> (64-bit with wide = .true.: step numbers, which pass 2**31 in a long run).
+  subroutine h5_create_growing(loc, path, is_real, where, err, wide)
     integer(hid_t), intent(in) :: loc
     character(len=*), intent(in) :: path, where
     logical, intent(in) :: is_real
     type(error_t), intent(inout) :: err
+    logical, intent(in), optional :: wide
     integer(hid_t) :: space, dcpl, dset, dtype
     integer(hsize_t) :: dims(1), maxdims(1), chunk(1)
     integer :: hdferr
@@ -269,6 +274,9 @@ contains
     maxdims = H5S_UNLIMITED_F
     chunk = GROW_CHUNK
     dtype = H5T_NATIVE_INTEGER
+    if (present(wide)) then
+      if (wide) dtype = h5kind_to_type(int64, H5_INTEGER_KIND)
+    end if
     if (is_real) dtype = H5T_NATIVE_DOUBLE
     call h5_ensure_groups(loc, path, where, err)
     if (err%failed()) return
@@ -325,6 +333,26 @@ contains
       mem_space_id=mspace, file_space_id=fspace)
     call close_after_append(dset, fspace, mspace, hdferr, path, where, err)
   end subroutine h5_append_int
+
+  !> Append one 64-bit integer to a growing 1D dataset.
+  subroutine h5_append_i8(loc, path, value, where, err)
+    integer(hid_t), intent(in) :: loc
+    character(len=*), intent(in) :: path, where
+    integer(i8), intent(in) :: value
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: dset, fspace, mspace
+    integer(hsize_t) :: n
+    integer(i8), target :: buf(1)
+    type(c_ptr) :: ptr
+    integer :: hdferr
+    call open_for_append(loc, path, dset, fspace, mspace, n, where, err)
+    if (err%failed()) return
+    buf = value
+    ptr = c_loc(buf)
+    call h5dwrite_f(dset, h5kind_to_type(int64, H5_INTEGER_KIND), ptr, hdferr, &
+      mem_space_id=mspace, file_space_id=fspace)
+    call close_after_append(dset, fspace, mspace, hdferr, path, where, err)
+  end subroutine h5_append_i8
 
   !> Cut a growing 1D dataset to its first n entries (a resumed run drops
   !> the frames a killed run wrote after its checkpoint). Returns the
@@ -394,6 +422,27 @@ contains
     if (hdferr == 0) call h5sclose_f(space, hdferr)
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot write attribute "' // name // '" in ' // where)
   end subroutine h5_attr_int
+
+  !> A scalar 64-bit integer attribute (a step number).
+  subroutine h5_attr_i8(obj, name, value, where, err)
+    integer(hid_t), intent(in) :: obj
+    character(len=*), intent(in) :: name, where
+    integer(i8), intent(in) :: value
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: space, attr, dtype
+    integer(i8), target :: buf(1)
+    type(c_ptr) :: ptr
+    integer :: hdferr
+    dtype = h5kind_to_type(int64, H5_INTEGER_KIND)
+    buf = value
+    ptr = c_loc(buf)
+    call h5screate_f(H5S_SCALAR_F, space, hdferr)
+    if (hdferr == 0) call h5acreate_f(obj, name, dtype, space, attr, hdferr)
+    if (hdferr == 0) call h5awrite_f(attr, dtype, ptr, hdferr)
+    if (hdferr == 0) call h5aclose_f(attr, hdferr)
+    if (hdferr == 0) call h5sclose_f(space, hdferr)
+    if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot write attribute "' // name // '" in ' // where)
+  end subroutine h5_attr_i8
 
   !> A scalar string attribute, null-padded so h5py reads it without
   !> trailing blanks.

@@ -20,7 +20,14 @@ module raccord_h5_read
   implicit none
   private
 
-  public :: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8, h5_dims
+  public :: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_read_attr_int, h5_write_i8, &
+    h5_dims
+
+  !> Longest text attribute read (raccord writes a few dozen characters).
+  integer(size_t), parameter :: MAX_ATTR_TEXT = 65536
+  !> Longest text dataset read (the echoed scene: kilobytes, a few MB with
+  !> long amplitude tables).
+  integer(size_t), parameter :: MAX_TEXT = 256_size_t*1024_size_t*1024_size_t
 
   !> Read a real(wp) dataset of rank 1 or 2 into an array of the expected shape.
   interface h5_read_real
@@ -143,6 +150,14 @@ contains
     call h5dget_type_f(dset, ftype, hdferr)
     if (hdferr == 0) call h5tget_size_f(ftype, n, hdferr)
     if (hdferr == 0) call h5tclose_f(ftype, hdferr)
+    ! the length comes from the file: checked before it sizes the text
+    if (hdferr == 0 .and. (n < 1 .or. n > MAX_TEXT)) then
+      call close_dataset(dset, path, where, err)
+      call raise_error(err, EXIT_INPUT, 'the text "' // path // '" in ' // where // ' declares ' // &
+        trim(size_text(n)) // ' characters, more than the ' // trim(size_text(MAX_TEXT)) // &
+        ' raccord writes: the file is damaged or not raccord''s')
+      return
+    end if
     if (hdferr == 0) then
       deallocate(text)
       allocate(character(len=int(n)) :: text)
@@ -176,6 +191,11 @@ contains
     end if
     call h5aget_type_f(attr, atype, hdferr)
     if (hdferr == 0) call h5tget_size_f(atype, n, hdferr)
+    ! the length comes from the file: raccord's attributes are short texts
+    if (hdferr == 0 .and. (n < 1 .or. n > MAX_ATTR_TEXT)) then
+      call h5tclose_f(atype, e2)
+      hdferr = -1
+    end if
     if (hdferr == 0) then
       deallocate(text)
       allocate(character(len=int(n)) :: text)
@@ -189,6 +209,25 @@ contains
     end if
     text = strip_nul(text)
   end subroutine h5_read_attr_text
+
+  !> Read a scalar integer attribute of an object.
+  subroutine h5_read_attr_int(obj, name, value, where, err)
+    integer(hid_t), intent(in) :: obj
+    character(len=*), intent(in) :: name, where
+    integer, intent(out) :: value
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: attr
+    integer :: hdferr, e2
+    value = 0
+    call h5aopen_f(obj, name, attr, hdferr)
+    if (hdferr /= 0) then
+      call raise_error(err, EXIT_INPUT, 'no attribute "' // name // '" in ' // where)
+      return
+    end if
+    call h5aread_f(attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
+    call h5aclose_f(attr, e2)
+    if (hdferr /= 0) call raise_error(err, EXIT_INPUT, 'cannot read attribute "' // name // '" in ' // where)
+  end subroutine h5_read_attr_int
 
   ! --- private -----------------------------------------------------------
 
@@ -311,4 +350,10 @@ contains
       s = s // trim(buf)
     end do
   end function shape_text
+
+  pure function size_text(n) result(s)
+    integer(size_t), intent(in) :: n
+    character(len=24) :: s
+    write(s, '(i0)') n
+  end function size_text
 end module raccord_h5_read

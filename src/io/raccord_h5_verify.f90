@@ -8,7 +8,9 @@ module raccord_h5_verify
   use, intrinsic :: iso_c_binding, only: c_loc, c_int8_t, c_ptr
   use hdf5, only: hid_t, hsize_t, size_t, h5gn_members_f, h5gget_obj_info_idx_f, h5dopen_f, h5dclose_f, &
     h5dget_type_f, h5dget_space_f, h5dread_f, h5tget_size_f, h5tclose_f, h5sclose_f, &
-    h5sget_simple_extent_npoints_f, h5aexists_f, H5G_GROUP_F, H5G_DATASET_F
+    h5aexists_f, H5G_GROUP_F, H5G_DATASET_F, &
+    h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, h5sselect_hyperslab_f, h5screate_simple_f, &
+    H5S_SELECT_SET_F
   use raccord_crc32, only: crc32_t, crc_add, crc_value, crc_hex
   use raccord_h5_read, only: h5_read_attr_text
   use raccord_kinds, only: i8
@@ -21,6 +23,10 @@ module raccord_h5_verify
   integer, parameter :: NAME_LEN = 256
   !> Deepest group nesting walked (raccord's files are a few levels deep).
   integer, parameter :: MAX_DEPTH = 16
+  !> Largest read of one dataset at once (bytes); larger ones go by slabs.
+  integer(i8), parameter :: SLAB_BYTES = 16_i8*1024_i8*1024_i8
+  !> Highest dataset rank read by slabs (raccord writes rank 1 and 2).
+  integer, parameter :: MAX_RANK = 8
 
   public :: h5_verify_tree, h5_read_raw
 
@@ -74,17 +80,83 @@ contains
   end subroutine h5_verify_tree
 
   !> Read a whole dataset in its file type (no conversion): a checksum
-  !> failure, or a damaged layout, makes the read fail.
+  !> failure, or a damaged layout, makes the read fail. A large array (the
+  !> history of a long run) is read in slabs of its slowest dimension, so
+  !> the memory of a check does not grow with the file.
   subroutine read_dataset(loc, path, where, err)
     integer(hid_t), intent(in) :: loc
     character(len=*), intent(in) :: path, where
     type(error_t), intent(inout) :: err
     integer(c_int8_t), allocatable :: bytes(:)
-    logical :: ok
-    call h5_read_raw(loc, path, bytes, ok)
+    logical :: ok, large
+    call read_in_slabs(loc, path, large, ok)
+    if (.not. large) call h5_read_raw(loc, path, bytes, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, where // ' is damaged: the dataset ' // path // &
       ' cannot be read back (checksum or layout error)')
   end subroutine read_dataset
+
+  !> Read a dataset of more than SLAB_BYTES bytes slab by slab (large =
+  !> .true., ok = every read worked); a smaller one is left to h5_read_raw
+  !> (large = .false.).
+  subroutine read_in_slabs(loc, path, large, ok)
+    integer(hid_t), intent(in) :: loc
+    character(len=*), intent(in) :: path
+    logical, intent(out) :: large, ok
+    integer(hid_t) :: dset, dtype, fspace, mspace
+    integer(size_t) :: tsize
+    integer(hsize_t) :: dims(MAX_RANK), maxdims(MAX_RANK), offset(MAX_RANK), count(MAX_RANK), start, n
+    integer(i8) :: row_bytes, rows
+    integer(c_int8_t), allocatable, target :: buf(:)
+    type(c_ptr) :: ptr
+    integer :: hdferr, cerr, rank, stat
+    large = .false.
+    ok = .false.
+    call h5dopen_f(loc, path, dset, hdferr)
+    if (hdferr /= 0) return
+    dtype = -1
+    fspace = -1
+    steps: block
+      call h5dget_type_f(dset, dtype, hdferr)
+      if (hdferr /= 0) exit steps
+      call h5tget_size_f(dtype, tsize, hdferr)
+      if (hdferr /= 0 .or. tsize <= 0) exit steps
+      call h5dget_space_f(dset, fspace, hdferr)
+      if (hdferr /= 0) exit steps
+      call h5sget_simple_extent_ndims_f(fspace, rank, hdferr)
+      if (hdferr /= 0 .or. rank < 1 .or. rank > MAX_RANK) exit steps
+      call h5sget_simple_extent_dims_f(fspace, dims(1:rank), maxdims(1:rank), hdferr)
+      if (hdferr < 0) exit steps
+      ! Fortran order: dims(rank) is the slowest dimension (h5dump's first)
+      row_bytes = int(tsize, i8)
+      if (rank > 1) row_bytes = row_bytes*int(product(dims(1:rank-1)), i8)
+      if (row_bytes > SLAB_BYTES .or. row_bytes*int(dims(rank), i8) <= SLAB_BYTES) exit steps
+      large = .true.
+      rows = SLAB_BYTES/row_bytes
+      allocate(buf(rows*row_bytes), stat=stat)
+      if (stat /= 0) exit steps
+      offset = 0
+      count(1:rank) = dims(1:rank)
+      start = 0
+      do while (start < dims(rank))
+        n = min(int(rows, hsize_t), dims(rank) - start)
+        offset(rank) = start
+        count(rank) = n
+        call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, offset(1:rank), count(1:rank), hdferr)
+        if (hdferr /= 0) exit steps
+        call h5screate_simple_f(rank, count(1:rank), mspace, hdferr)
+        if (hdferr /= 0) exit steps
+        ptr = c_loc(buf)
+        call h5dread_f(dset, dtype, ptr, hdferr, mem_space_id=mspace, file_space_id=fspace)
+        call h5sclose_f(mspace, cerr)
+        if (hdferr /= 0) exit steps
+        start = start + n
+      end do
+      ok = .true.
+    end block steps
+    if (fspace /= -1) call h5sclose_f(fspace, cerr)
+    if (dtype /= -1) call h5tclose_f(dtype, cerr)
+    call h5dclose_f(dset, cerr)
+  end subroutine read_in_slabs
 
   !> The stored bytes of a whole dataset (file type, no conversion), with
   !> the library's checksums checked and, for a text, its crc32 attribute.
@@ -113,7 +185,7 @@ contains
       end if
       call h5dget_space_f(dset, space, hdferr)
       if (hdferr == 0) then
-        call h5sget_simple_extent_npoints_f(space, npoints, hdferr)
+        call dataspace_points(space, npoints, hdferr)
         call h5sclose_f(space, cerr)
       end if
       ! the sizes come from the file: checked before they size a buffer
@@ -137,6 +209,40 @@ contains
     end block steps
     call h5dclose_f(dset, cerr)
   end subroutine h5_read_raw
+
+  !> Number of points of a dataspace: 1 for a scalar, the product of the
+  !> dims otherwise, 0 for an empty growing dataset (which
+  !> h5sget_simple_extent_npoints_f reports as a failure: a results file
+  !> without frames, or an empty history, was taken for damaged).
+  subroutine dataspace_points(space, npoints, hdferr)
+    integer(hid_t), intent(in) :: space
+    integer(hsize_t), intent(out) :: npoints
+    integer, intent(out) :: hdferr
+    integer(hsize_t) :: dims(MAX_RANK), maxdims(MAX_RANK)
+    integer :: rank, k
+    npoints = 0
+    call h5sget_simple_extent_ndims_f(space, rank, hdferr)
+    if (hdferr /= 0 .or. rank < 0 .or. rank > MAX_RANK) then
+      hdferr = -1
+      return
+    end if
+    if (rank == 0) then
+      npoints = 1
+      return
+    end if
+    call h5sget_simple_extent_dims_f(space, dims(1:rank), maxdims(1:rank), hdferr)
+    if (hdferr < 0) return
+    hdferr = 0
+    ! the dims come from the file: a product past 2**62 is refused, not wrapped
+    npoints = 1
+    do k = 1, rank
+      if (dims(k) > 0 .and. npoints > huge(npoints)/4/dims(k)) then
+        hdferr = -1
+        return
+      end if
+      npoints = npoints*dims(k)
+    end do
+  end subroutine dataspace_points
 
   !> A text dataset carries its CRC-32 as the attribute crc32
   !> (h5_write_text): the bytes read must have it.

@@ -24,15 +24,16 @@
 module raccord_results
   use hdf5, only: hid_t, hsize_t, h5fopen_f, h5fclose_f, h5fflush_f, h5gcreate_f, h5gclose_f, &
     h5dopen_f, h5dclose_f, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, prefix_error, EXIT_IO, EXIT_INPUT, EXIT_INTERNAL
   use raccord_strings, only: str
   use raccord_files, only: make_directory, rename_file, delete_file, file_exists, write_failure_reason
   use raccord_h5_verify, only: h5_verify_tree
   use raccord_h5, only: h5_acquire, h5_release, h5_create_file, h5_delete_link, h5_link_exists, &
     h5_write_real, h5_write_int, h5_write_text, h5_attr_real, h5_attr_int, h5_attr_text, &
-    h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_int, h5_truncate_growing
+    h5_attr_text_list, h5_create_growing, h5_append_real, h5_append_i8, h5_truncate_growing, h5_attr_i8
   use raccord_h5_read, only: h5_read_real, h5_read_attr_text, h5_dims
+  use raccord_h5_table, only: h5_create_table, h5_append_rows, h5_truncate_rows
   use raccord_xdmf, only: xdmf_block_t, xdmf_field_t, xdmf_frame_t, xdmf_surface_t, write_xdmf, &
     write_meshio_index, frame_label
   use raccord_node_order, only: node_order
@@ -42,6 +43,7 @@ module raccord_results
   public :: results_open, results_write_mesh, results_write_node_set, results_verify
   public :: results_begin_frame, results_write_nodal, results_end_frame
   public :: results_write_array, results_write_table, results_set_text, results_close
+  public :: results_create_table, results_append_table, results_truncate_table
   public :: results_suspend, results_resume, results_has, results_delete, results_flush
   public :: results_add_surface, results_write_surface_frame
 
@@ -73,9 +75,14 @@ module raccord_results
     type(xdmf_surface_t), allocatable :: surfaces(:)
     logical :: in_frame = .false.
     integer :: nframe = 0                          !< frames begun
-    integer :: step = 0                            !< step of the current frame
+    integer(i8) :: step = 0                        !< step of the current frame (64-bit: a long run passes 2**31)
     type(xdmf_frame_t), allocatable :: frames(:)
   end type results_t
+
+  !> Start an output frame at a step given as a default or a 64-bit integer.
+  interface results_begin_frame
+    module procedure begin_frame_i8, begin_frame_int
+  end interface results_begin_frame
 
   !> Write a real(wp) array of rank 1 or 2 at an HDF5 path.
   interface results_write_array
@@ -224,7 +231,7 @@ contains
     if (err%failed()) return
     call h5_write_text(root, '/status', 'running', res%where, err)
     call h5_create_growing(root, '/frames/times', .true., res%where, err)
-    call h5_create_growing(root, '/frames/steps', .false., res%where, err)
+    call h5_create_growing(root, '/frames/steps', .false., res%where, err, wide=.true.)
     call flush_file(res, 'the file header', err)
   end subroutine results_open
 
@@ -306,9 +313,9 @@ contains
 
   !> Start output frame number nframe (group /frames/NNNNNN, six digits from
   !> 000000) with its step and time as attributes.
-  subroutine results_begin_frame(res, step, time, err)
+  subroutine begin_frame_i8(res, step, time, err)
     type(results_t), intent(inout) :: res
-    integer, intent(in) :: step
+    integer(i8), intent(in) :: step
     real(wp), intent(in) :: time
     type(error_t), intent(inout) :: err
     type(xdmf_frame_t), allocatable :: grown(:)
@@ -333,7 +340,7 @@ contains
       return
     end if
     call h5_attr_real(grp, 'time', time, res%where, err)
-    call h5_attr_int(grp, 'step', step, res%where, err)
+    call h5_attr_i8(grp, 'step', step, res%where, err)
     call h5gclose_f(grp, hdferr)
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close group "' // path // '" in ' // res%where)
     if (err%failed()) return
@@ -349,7 +356,15 @@ contains
     allocate(res%frames(res%nframe)%fields(4))
     res%step = step
     res%in_frame = .true.
-  end subroutine results_begin_frame
+  end subroutine begin_frame_i8
+
+  subroutine begin_frame_int(res, step, time, err)
+    type(results_t), intent(inout) :: res
+    integer, intent(in) :: step
+    real(wp), intent(in) :: time
+    type(error_t), intent(inout) :: err
+    call begin_frame_i8(res, int(step, i8), time, err)
+  end subroutine begin_frame_int
 
   !> Write a nodal field values(ncomp, nnode) of the current frame to
   !> /frames/NNNNNN/<name>. Stored as h5dump dims (nnode) for ncomp = 1,
@@ -484,7 +499,7 @@ contains
     end if
     res%in_frame = .false.
     call h5_append_real(res%file, '/frames/times', res%frames(res%nframe)%time, res%where, err)
-    call h5_append_int(res%file, '/frames/steps', res%step, res%where, err)
+    call h5_append_i8(res%file, '/frames/steps', res%step, res%where, err)
     call flush_file(res, 'frame ' // frame_label(res%nframe - 1), err)
   end subroutine results_end_frame
 
@@ -518,6 +533,56 @@ contains
     call h5dclose_f(dset, hdferr)
     if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close dataset "' // full // '" in ' // res%where)
   end subroutine results_write_table
+
+  !> Create an empty growing table at `path` (h5dump dims (0, ncol), rows
+  !> unlimited, chunk_rows rows per chunk, raccord_h5_table) with the
+  !> column names as its string-array attribute `columns`; rows are added
+  !> with results_append_table while the run goes on.
+  subroutine results_create_table(res, path, names, chunk_rows, err)
+    type(results_t), intent(inout) :: res
+    character(len=*), intent(in) :: path
+    character(len=*), intent(in) :: names(:)
+    integer, intent(in) :: chunk_rows
+    type(error_t), intent(inout) :: err
+    integer(hid_t) :: dset
+    integer :: hdferr
+    character(len=:), allocatable :: full
+    if (.not. usable(res, 'results_create_table', err)) return
+    full = absolute(path)
+    call h5_create_table(res%file, full, size(names), chunk_rows, res%where, err)
+    if (err%failed()) return
+    call h5dopen_f(res%file, full, dset, hdferr)
+    if (hdferr /= 0) then
+      call raise_error(err, EXIT_IO, 'cannot reopen dataset "' // full // '" in ' // res%where)
+      return
+    end if
+    call h5_attr_text_list(dset, 'columns', names, res%where, err)
+    call h5dclose_f(dset, hdferr)
+    if (hdferr /= 0) call raise_error(err, EXIT_IO, 'cannot close dataset "' // full // '" in ' // res%where)
+  end subroutine results_create_table
+
+  !> Append rows(ncol, n) to the growing table at `path`.
+  subroutine results_append_table(res, path, rows, err)
+    type(results_t), intent(inout) :: res
+    character(len=*), intent(in) :: path
+    real(wp), intent(in) :: rows(:,:)
+    type(error_t), intent(inout) :: err
+    if (.not. usable(res, 'results_append_table', err)) return
+    call h5_append_rows(res%file, absolute(path), rows, res%where, err)
+  end subroutine results_append_table
+
+  !> Cut the growing table at `path` (ncol columns) back to nrow rows, for a
+  !> resumed run; a missing table, another column count or fewer rows is
+  !> EXIT_INPUT (the file does not belong to the checkpoint).
+  subroutine results_truncate_table(res, path, ncol, nrow, err)
+    type(results_t), intent(inout) :: res
+    character(len=*), intent(in) :: path
+    integer, intent(in) :: ncol
+    integer(i8), intent(in) :: nrow
+    type(error_t), intent(inout) :: err
+    if (.not. usable(res, 'results_truncate_table', err)) return
+    call h5_truncate_rows(res%file, absolute(path), ncol, nrow, res%where, err)
+  end subroutine results_truncate_table
 
   !> Store a text as a scalar string dataset: `name` alone goes under the
   !> root (/version, /scene, /status), a path starting with '/' is used as

@@ -34,13 +34,21 @@ contains
     type(error_t), intent(inout) :: err
     integer :: ios
     character(len=512) :: msg
-    logical :: exists
+    logical :: exists, busy
     tf%path = path
     tf%line_no = 0
     inquire(file=path, exist=exists)
     if (.not. exists) then
       call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" does not exist: check the path ' // &
         '(relative paths are taken from the scene deck''s folder)')
+      return
+    end if
+    ! A file this process is reading already (an Abaqus *INCLUDE cycle):
+    ! named as such, not as the runtime's "File already opened in another unit".
+    inquire(file=path, opened=busy)
+    if (busy) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is included while it is being read (a ' // &
+        'file that includes itself, directly or through other files): remove that *INCLUDE')
       return
     end if
     open(newunit=tf%unit, file=path, status='old', action='read', form='formatted', &

@@ -95,8 +95,9 @@ contains
       s = 'a list of 1 to ' // str(MAX_TABLE) // ' real numbers, e.g. ' // key // ' = 0.0, 1.0'
     else if (key == 'velocity' .or. key == 'body_force' .or. key == 'value') then
       s = 'two real numbers (x, y), e.g. ' // key // ' = 0.0, -1.0'
-    else if (key == 'frames' .or. key == 'history_every' .or. key == 'max_iterations') then
-      s = 'a whole number, e.g. ' // key // ' = 20'
+    else if (key == 'frames' .or. key == 'history_every' .or. key == 'max_iterations' .or. &
+             key == 'checkpoint_every') then
+      s = 'a whole number from 0 to 2147483647, e.g. ' // key // ' = 20'
     else if (key == 'stress') then
       s = '.true. or .false.'
     else

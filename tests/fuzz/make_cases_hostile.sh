@@ -4,8 +4,9 @@
 # edit_lines, rng) and variables (seeds, cases, c).
 #
 #   sizes     counts that would size an allocation: Gmsh header and block
-#             counts, Abaqus GENERATE ranges of billions, a history table
-#             of billions of rows                                         2
+#             counts, Abaqus GENERATE ranges of billions; a history of
+#             trillions of rows (more than the disk holds), millions of
+#             result frames (a frame per step is fine on a short run)     2, valid
 #   overflow  t_end / dt beyond what a step counter can count            2
 #   paths     empty -o or scene argument (1); the output stem locked by
 #             another run (4)                                             1, 4
@@ -52,14 +53,32 @@ size_case generate-elset-step plate.inp "ELSET GENERATE 1, 2147483647, 3" GENERA
   '$0 == "1, 3, 1" { $0 = "1, 2147483647, 3" } { print }'
 size_case generate-nset-2e9 plate.inp "an NSET GENERATE 1, 2000000000" GENERATE \
   '{ print } $0 == "1, 5" { print "*NSET, NSET=huge, GENERATE"; print "1, 2000000000" }'
-# A history row per step of a run of billions of steps.
+# A history row per step of a run of trillions of steps: the history is
+# streamed to disk (no memory grows with the steps), but its files would
+# not fit on any disk: refused before the run starts.
 for d in plate.nml contact.nml; do
-  new_case "sizes.$d.history-every-step" sizes bad 2 "$d: t_end = 1e3 (billions of steps) with history_every = 1"
+  new_case "sizes.$d.history-every-step" sizes bad 2 "$d: t_end = 1e6 (trillions of steps) with history_every = 1"
   cp "$seeds/$d" "$seeds/$(mesh_of "$d")" "$c/"
-  set_key "$c/$d" t_end 1.0e3
+  set_key "$c/$d" t_end 1.0e6
   set_key "$c/$d" history_every 1
   set_args -o out "$d"
   set_names history_every
+done
+
+# Result frames are numbered with six digits and each keeps a record for
+# the XDMF: frames = 2e9 over millions of steps is refused naming frames;
+# over the seed's few steps it is a frame per step (valid).
+for d in plate.nml contact.nml; do
+  new_case "sizes.$d.frames-2e9-long" sizes bad 2 "$d: t_end = 1 (millions of steps), frames = 2000000000"
+  cp "$seeds/$d" "$seeds/$(mesh_of "$d")" "$c/"
+  set_key "$c/$d" t_end 1.0
+  set_key "$c/$d" frames 2000000000
+  set_args -o out "$d"
+  set_names frames
+  new_case "sizes.$d.frames-2e9-short" sizes valid 0 "$d: frames = 2000000000 over its few steps (a frame per step)"
+  cp "$seeds/$d" "$seeds/$(mesh_of "$d")" "$c/"
+  set_key "$c/$d" frames 2000000000
+  set_args -o out "$d"
 done
 
 # Files without end of line: /dev/zero as the deck and as the mesh.
@@ -312,3 +331,20 @@ cp "$seeds/plate.nml" "$seeds/plate.msh" "$c/"
 set_args -o out plate.nml
 set_setup disk_full_now
 set_names "No space left"
+# An *INCLUDE cycle: named as such, not as the runtime's "File already opened".
+new_case messages.plate.inp.include-self messages bad 2 "plate.inp includes itself"
+d=$(seed_pair plate.inp)
+{ echo "*INCLUDE, INPUT=plate.inp"; cat "$seeds/plate.inp"; } > "$c/plate.inp"
+set_args -o out "$d"
+set_names "includes itself"
+new_case messages.plate.inp.include-cycle messages bad 2 "plate.inp includes b.inp, which includes ./plate.inp"
+d=$(seed_pair plate.inp)
+{ echo "*INCLUDE, INPUT=b.inp"; cat "$seeds/plate.inp"; } > "$c/plate.inp"
+echo "*INCLUDE, INPUT=./plate.inp" > "$c/b.inp"
+set_args -o out "$d"
+set_names "includes itself"
+# An integer key beyond 32 bits: the hint names a whole number and its range.
+msg_case checkpoint-every-2e19 plate.nml "whole number from 0 to 2147483647" "&run checkpoint_every = 99999999999999999999"
+add_to_group "$c/plate.nml" run "checkpoint_every = 99999999999999999999"
+msg_case frames-3e9 plate.nml "whole number from 0 to 2147483647" "&output frames = 3000000000"
+set_key "$c/plate.nml" frames 3000000000

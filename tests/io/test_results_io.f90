@@ -16,6 +16,8 @@ program test_results_io
     new_test('results: incomplete close', test_incomplete), &
     new_test('results: node order, body grids, surfaces', test_order_surfaces), &
     new_test('results: misuse and bad paths', test_results_errors), &
+    new_test('results: growing table in blocks, cut back', test_growing_table), &
+    new_test('results: a step past 2**31 is kept', test_long_step), &
     new_test('history: header, rows, names', test_history)])
 
 contains
@@ -552,6 +554,124 @@ contains
     call results_close(res, .false., err, reason='test')
     call check(failure, .not. err%failed(), 'close after errors: ' // message(err))
   end subroutine test_results_errors
+
+  !> A growing table (the history of a run, issue #18): rows appended in
+  !> blocks across chunk boundaries read back in order; cut back to a row
+  !> count and continued as a resumed run does; a longer cut, a table of
+  !> another width or a missing one is refused with EXIT_INPUT.
+  subroutine test_growing_table(failure)
+    use raccord_kinds, only: wp, i8
+    use raccord_error, only: error_t, EXIT_INPUT
+    use raccord_results, only: results_t, results_open, results_close, results_create_table, &
+      results_append_table, results_truncate_table
+    use raccord_h5, only: h5_acquire, h5_release
+    use raccord_h5_verify, only: h5_verify_tree
+    use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
+    type(failure_t), allocatable, intent(out) :: failure
+    type(results_t) :: res
+    type(error_t) :: err, e2
+    real(wp) :: rows(3, 20)
+    real(wp), allocatable :: got(:,:)
+    integer(hid_t) :: file
+    integer :: r, hdferr, ndata
+    do r = 1, 20
+      rows(:, r) = [0.5_wp*r, real(r, wp), -1.0e-3_wp*r*r]
+    end do
+    call results_open(res, 'out_table/run', err)
+    call results_create_table(res, '/history', [character(len=8) :: 'time', 'step', 'energy'], 4, err)
+    call results_append_table(res, '/history', rows(:, 1:3), err)     ! inside the first chunk
+    call results_append_table(res, '/history', rows(:, 4:12), err)    ! across two chunk boundaries
+    call results_append_table(res, '/history', rows(:, 13:12), err)   ! nothing
+    call check(failure, .not. err%failed(), 'appending: ' // message(err))
+    ! a resumed run: cut back to 7 rows, then go on with rows 8..10
+    call results_truncate_table(res, '/history', 3, 7_i8, err)
+    call results_append_table(res, '/history', rows(:, 8:10), err)
+    call check(failure, .not. err%failed(), 'cut back and continued: ' // message(err))
+    call results_truncate_table(res, '/history', 3, 11_i8, e2)
+    call check(failure, e2%code == EXIT_INPUT .and. index(e2%message, '10 rows, fewer than the 11') > 0, &
+      'a cut to more rows than there are is refused: ' // message(e2))
+    call e2%clear()
+    call results_truncate_table(res, '/history', 4, 5_i8, e2)
+    call check(failure, e2%code == EXIT_INPUT .and. index(e2%message, 'not a table of 4 columns') > 0, &
+      'a table of another width is refused: ' // message(e2))
+    call e2%clear()
+    call results_truncate_table(res, '/nothing', 3, 0_i8, e2)
+    call check(failure, e2%code == EXIT_INPUT .and. index(e2%message, 'has no table "/nothing"') > 0, &
+      'a missing table is refused: ' // message(e2))
+    call results_close(res, .true., err)
+    call check(failure, .not. err%failed(), 'close: ' // message(err))
+    if (allocated(failure)) return
+    call h5_acquire(err)
+    call h5fopen_f('out_table/run.h5', H5F_ACC_RDONLY_F, file, hdferr)
+    if (hdferr /= 0) then
+      call fail_now(failure, 'cannot open out_table/run.h5')
+      return
+    end if
+    call read_real_2d(file, '/history', got, failure)
+    if (.not. allocated(failure)) then
+      call check(failure, size(got, 1) == 3 .and. size(got, 2) == 10, '/history is 10 rows of 3: (' // &
+        itoa(size(got, 1)) // ', ' // itoa(size(got, 2)) // ')')
+      if (.not. allocated(failure)) call check(failure, all(got == rows(:, 1:10)), '/history holds rows 1..10 in order')
+    end if
+    ndata = 0
+    call h5_verify_tree(file, '/', 'out_table/run.h5', ndata, err)
+    call check(failure, .not. err%failed(), 'the file verifies: ' // message(err))
+    call h5fclose_f(file, hdferr)
+    call h5_release(err)
+  end subroutine test_growing_table
+
+  !> A run may take more than 2**31 steps (up to 2**53): a frame's step is
+  !> stored as a 64-bit integer, in /frames/steps and in its attribute (it
+  !> was converted to a default integer and wrapped, issue #18).
+  subroutine test_long_step(failure)
+    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
+    use, intrinsic :: iso_fortran_env, only: int64
+    use raccord_kinds, only: wp, i8
+    use raccord_error, only: error_t
+    use raccord_results, only: results_t, result_block_t, results_open, results_write_mesh, &
+      results_begin_frame, results_write_nodal, results_end_frame, results_close
+    use raccord_h5, only: h5_acquire, h5_release
+    use hdf5, only: hid_t, hsize_t, h5fopen_f, h5fclose_f, h5dopen_f, h5dread_f, h5dclose_f, h5aopen_by_name_f, &
+      h5aread_f, h5aclose_f, h5kind_to_type, H5F_ACC_RDONLY_F, H5_INTEGER_KIND
+    type(failure_t), allocatable, intent(out) :: failure
+    type(results_t) :: res
+    type(error_t) :: err
+    real(wp), allocatable :: x(:,:)
+    type(result_block_t), allocatable :: blocks(:)
+    integer(i8), parameter :: big = 3000000000_i8
+    integer(i8), target :: steps(2), attr_step(1)
+    integer(hid_t) :: file, dset, attr
+    type(c_ptr) :: ptr
+    integer :: hdferr
+    call small_mesh(x, blocks)
+    call results_open(res, 'out_long/run', err)
+    call results_write_mesh(res, x, blocks, err)
+    call results_begin_frame(res, 0, 0.0_wp, err)
+    call results_write_nodal(res, 'displacement', 0.0_wp*x, err)
+    call results_end_frame(res, err)
+    call results_begin_frame(res, big, 1.0_wp, err)
+    call results_write_nodal(res, 'displacement', 0.0_wp*x, err)
+    call results_end_frame(res, err)
+    call results_close(res, .true., err)
+    call check(failure, .not. err%failed(), 'writing: ' // message(err))
+    if (allocated(failure)) return
+    call h5_acquire(err)
+    call h5fopen_f('out_long/run.h5', H5F_ACC_RDONLY_F, file, hdferr)
+    steps = -1
+    attr_step = -1
+    call h5dopen_f(file, '/frames/steps', dset, hdferr)
+    ptr = c_loc(steps)
+    if (hdferr == 0) call h5dread_f(dset, h5kind_to_type(int64, H5_INTEGER_KIND), ptr, hdferr)
+    call h5dclose_f(dset, hdferr)
+    call h5aopen_by_name_f(file, '/frames/000001', 'step', attr, hdferr)
+    ptr = c_loc(attr_step)
+    if (hdferr == 0) call h5aread_f(attr, h5kind_to_type(int64, H5_INTEGER_KIND), ptr, hdferr)
+    call h5aclose_f(attr, hdferr)
+    call h5fclose_f(file, hdferr)
+    call h5_release(err)
+    call check(failure, steps(1) == 0 .and. steps(2) == big, '/frames/steps = [0, 3000000000]')
+    call check(failure, attr_step(1) == big, 'the step attribute of frame 000001 is 3000000000')
+  end subroutine test_long_step
 
   subroutine test_history(failure)
     use raccord_kinds, only: wp
