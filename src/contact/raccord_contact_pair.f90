@@ -17,7 +17,6 @@ module raccord_contact_pair
   use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_contact_surface, only: contact_surface_t, build_contact_surface
-  use raccord_contact_search, only: bins_t
   use raccord_contact_verlet, only: verlet_t, verlet_init
   use raccord_constraint_set, only: constraint_set_t
   use raccord_multiplier_solver, only: solver_work_t, solve_multipliers, ST_OPEN, ST_STICK, ST_SLIP
@@ -37,8 +36,7 @@ module raccord_contact_pair
     integer :: max_iter = 50
     type(contact_surface_t) :: slave, master
     type(constraint_set_t) :: cs
-    type(bins_t) :: bins                           !< node-to-segment's search
-    type(verlet_t) :: verlet                       !< mortar's candidate lists (incremental search)
+    type(verlet_t) :: verlet                       !< candidate lists of the incremental search
     type(solver_work_t) :: work
     type(mortar_work_t) :: mortar                  !< mortar scratch (method mortar only)
     ! Per slave surface node, kept between steps (status is the warm start).
@@ -184,7 +182,7 @@ contains
         pair%verlet, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
-        pair%bins, pair%trib, pair%nodal_normal, pair%cs)
+        pair%verlet, pair%trib, pair%nodal_normal, pair%cs)
     end select
     m = pair%cs%m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.
