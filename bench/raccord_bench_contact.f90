@@ -23,22 +23,31 @@ program raccord_bench_contact
   use raccord_test_meshes, only: rect_mesh, join_meshes
   implicit none
 
-  integer :: nsteps, k, nsizes
+  integer :: nsteps, k, nsizes, ios
   integer :: sizes(32)
-  character(len=32) :: arg
+  character(len=64) :: arg
 
   nsteps = 200
   nsizes = 3
   sizes(1:3) = [100, 1000, 10000]
+  do k = 1, command_argument_count()
+    call get_command_argument(k, arg)
+    if (arg == '-h' .or. arg == '--help') then
+      call print_usage()
+      stop
+    end if
+  end do
   if (command_argument_count() >= 1) then
     call get_command_argument(1, arg)
-    read(arg, *) nsteps
+    read(arg, *, iostat=ios) nsteps
+    if (ios /= 0 .or. nsteps < 1) call bad_argument('steps', arg)
   end if
   if (command_argument_count() >= 2) then
     nsizes = min(32, command_argument_count() - 1)
     do k = 1, nsizes
       call get_command_argument(k + 1, arg)
-      read(arg, *) sizes(k)
+      read(arg, *, iostat=ios) sizes(k)
+      if (ios /= 0 .or. sizes(k) < 2) call bad_argument('slave nodes', arg)
     end do
   end if
   write(*, '(a)') '# method          mu   slave_nodes  elements  steps  search_ns/node/step  solve_ns/node/step' // &
@@ -51,6 +60,25 @@ program raccord_bench_contact
   end do
 
 contains
+
+  subroutine print_usage()
+    write(*, '(a)') 'usage: raccord_bench_contact [STEPS [N1 N2 ...]]', &
+      '', &
+      'Two steel strips pressed together (non-matching 3:4 at the interface, every', &
+      'interface node in contact), STEPS steps (default 200) for each number of slave', &
+      'nodes N (default 100 1000 10000), with node-to-segment and mortar P1, mu = 0 and 0.3.', &
+      'Prints per case: search and matching, and multiplier solve, in ns per contact node', &
+      'and step; active-set iterations per step; the whole step in ns per element; the', &
+      'contact share of the step (%); threads (OMP_NUM_THREADS; contact stays serial).', &
+      'Figures for doc/performance.md, not a test. Exit 0, or 1 on a bad argument.'
+  end subroutine print_usage
+
+  subroutine bad_argument(what, text)
+    character(len=*), intent(in) :: what, text
+    write(*, '(a)') 'raccord_bench_contact: ' // what // ' must be a whole number >= ' // &
+      merge('1', '2', what == 'steps') // ', not ''' // trim(text) // '''; see --help'
+    error stop 1
+  end subroutine bad_argument
 
   subroutine run_case(method, mu, nslave)
     integer, intent(in) :: method, nslave

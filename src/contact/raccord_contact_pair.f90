@@ -17,7 +17,7 @@ module raccord_contact_pair
   use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_contact_surface, only: contact_surface_t, build_contact_surface
-  use raccord_contact_search, only: bins_t
+  use raccord_contact_verlet, only: verlet_t, verlet_init
   use raccord_constraint_set, only: constraint_set_t
   use raccord_multiplier_solver, only: solver_work_t, solve_multipliers, ST_OPEN, ST_STICK, ST_SLIP
   use raccord_node_to_segment, only: build_node_to_segment
@@ -36,7 +36,7 @@ module raccord_contact_pair
     integer :: max_iter = 50
     type(contact_surface_t) :: slave, master
     type(constraint_set_t) :: cs
-    type(bins_t) :: bins
+    type(verlet_t) :: verlet                       !< candidate lists of the incremental search
     type(solver_work_t) :: work
     type(mortar_work_t) :: mortar                  !< mortar scratch (method mortar only)
     ! Per slave surface node, kept between steps (status is the warm start).
@@ -125,6 +125,7 @@ contains
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance
         if (pair%reach <= 0.0_wp) pair%reach = max(pair%slave%h_max, pair%master%h_max)
+        call verlet_init(pair%verlet, pair%slave, pair%master, spec%method == METHOD_MORTAR, pair%reach)
         associate (ns => pair%slave%nnode)
           allocate(pair%status(ns), source=ST_OPEN)
           allocate(pair%sigma(ns), pair%gap(ns), pair%lam_n(ns), pair%lam_t(ns), pair%pressure(ns), &
@@ -178,10 +179,10 @@ contains
     select case (pair%method)
     case (METHOD_MORTAR)
       call build_mortar(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, pair%multiplier, &
-        pair%bins, pair%cs, pair%mortar)
+        pair%verlet, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
-        pair%bins, pair%trib, pair%nodal_normal, pair%cs)
+        pair%verlet, pair%trib, pair%nodal_normal, pair%cs)
     end select
     m = pair%cs%m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.

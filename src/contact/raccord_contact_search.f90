@@ -1,7 +1,8 @@
 !> Contact search by binning: the master segments are sorted into a uniform
 !> grid of cells on the current geometry, and each slave node looks only at
 !> the segments of its own cell. Building and querying are O(n) in surface
-!> nodes; the grid is rebuilt every step (the surfaces move).
+!> nodes. raccord_contact_verlet builds it only when the surfaces have
+!> moved by more than a skin distance, with boxes padded by that skin.
 !> Memory is kept between steps and grows only when a surface needs more.
 module raccord_contact_search
   use raccord_kinds, only: wp
@@ -28,11 +29,14 @@ contains
   !> (a step moves nodes by a small fraction of an element). Cells have the
   !> mean inflated box size, so a node sees a few segments wherever the
   !> surface is refined; large distant segments span several cells.
-  subroutine build_bins(bins, x, seg, nen, reach)
+  !> With `pad`, every box is inflated by pad instead (the candidate lists
+  !> of raccord_contact_verlet, built for several steps).
+  subroutine build_bins(bins, x, seg, nen, reach, pad)
     type(bins_t), intent(inout) :: bins
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: seg(:,:), nen
     real(wp), intent(in) :: reach
+    real(wp), intent(in), optional :: pad
     integer :: k, j, nseg, i0, i1, j0, j1, ii, jj, c, total
     real(wp) :: lo(2), hi(2), gl(2), gh(2), r, mean_size
     nseg = size(seg, 2)
@@ -52,6 +56,7 @@ contains
         hi = max(hi, x(:, seg(j, k)))
       end do
       r = min(reach, norm2(x(:, seg(2, k)) - x(:, seg(1, k))))
+      if (present(pad)) r = pad
       ! A quadratic edge bulges beyond the box of its nodes by less than its
       ! own length for any sane mesh: the inflation covers it.
       bins%box(:, k) = [lo - r, hi + r]

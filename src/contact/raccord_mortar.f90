@@ -20,15 +20,18 @@
 !> overlap of [-1, 1] with the projected interval, split at the
 !> discontinuities of psi, gives the mortar segments; each is integrated by
 !> 3-point Gauss, with the master parameter at each point where the slave
-!> normal ray meets the master segment. Candidates come from the bins of
-!> raccord_contact_search, so the cost is linear in the surface nodes.
+!> normal ray meets the master segment. Candidates come from the lists of
+!> raccord_contact_verlet (the bins of raccord_contact_search, rebuilt
+!> only when the surfaces have moved by more than a skin distance), and
+!> only the slave segments with candidates are visited: the cost follows
+!> the part of the slave near the master, not the surfaces' length.
 module raccord_mortar
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_scene, only: MULT_P1, MULT_P0, MULT_DUAL
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
-  use raccord_contact_search, only: bins_t, build_bins, query_bins
+  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
@@ -72,11 +75,12 @@ module raccord_mortar
     real(wp) :: crow_xi(2) = 0.0_wp           !< slave parameter of its projection
     real(wp) :: crow_n(2, 2) = 0.0_wp         !< slave normal there (unit)
     integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
-    integer, allocatable :: mptr(:)           !< (nseg + 1) start of each slave segment's master entries
+    integer, allocatable :: mbeg(:), mend(:)  !< (nseg) each slave segment's master entries (empty: mbeg > mend)
+    integer, allocatable :: stamp(:)          !< (nnode) last step a node's normal was taken at
+    integer :: nstep = 0
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
-    logical, allocatable :: mark(:)           !< (master nseg) candidate already seen
     integer, allocatable :: cand(:)           !< candidates of the current slave segment
     ! Projections of the master corner nodes on the current slave segment,
     ! shared by the two master segments that meet at a corner, and F at the
@@ -128,9 +132,9 @@ contains
     allocate(w%nrm(2, nn), w%len(nn), w%trib(nn), source=0.0_wp)
     allocate(w%g1loc(3, 3, ns), source=0.0_wp)
     allocate(w%covered(nn), source=.false.)
-    allocate(w%mptr(ns + 1), source=1)
+    allocate(w%mbeg(ns), source=1)
+    allocate(w%mend(ns), w%stamp(nn), source=0)
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
-    allocate(w%mark(master%nseg), source=.false.)
     allocate(w%cand(max(16, master%nseg)))
     ! Corner c of the master chain is master%corner(c); segment l runs from
     ! corner l to corner l+1 (corner 1 again at the end of a closed loop).
@@ -163,27 +167,39 @@ contains
   !> `reach`: geometry on x (t(n)), weighted gaps on xpred (predicted
   !> t(n+1)), weighted slip on the increments du. `multiplier` is MULT_P1 or
   !> MULT_P0 (as given to init_mortar).
-  subroutine build_mortar(slave, master, x, xpred, du, reach, multiplier, bins, cs, w)
+  subroutine build_mortar(slave, master, x, xpred, du, reach, multiplier, v, cs, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
     real(wp), intent(in) :: reach
     integer, intent(in) :: multiplier
-    type(bins_t), intent(inout) :: bins
+    type(verlet_t), intent(inout) :: v
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, nen, ncand, ix, iy, nx, ny, first, last, q, l, t
-    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), p(2), xi1, xi2
+    integer :: k, a, c, nen, ncand, q, l, t, tn
+    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), xi1, xi2
 
     w%multiplier = multiplier
     nen = slave%nen_seg
-    call build_bins(bins, x, master%seg, master%nen_seg, reach)
-    call slave_normals(slave, x, w)
-    w%xi_seg = 0
-    w%f_seg = 0
+    call verlet_refresh(v, x, slave, master, reach)
+    if (v%rebuilt) then
+      ! The near segments change: clear what the others keep between steps.
+      w%g1loc = 0.0_wp
+      w%covered = .false.
+      w%len = 0.0_wp
+      w%trib = 0.0_wp
+      w%cidx = 0
+      w%mbeg = 1
+      w%mend = 0
+    end if
+    call slave_normals(slave, x, v, w)
+    do t = 1, v%nmnear
+      l = v%mnear(t)
+      w%xi_seg(w%mcorner(:, l)) = 0
+      w%f_seg(w%mcorner(:, l)) = 0
+    end do
     w%nment = 0
-    w%covered = .false.
-    w%mptr(1) = 1
-    slave_segments: do k = 1, slave%nseg
+    slave_segments: do tn = 1, v%nnear
+      k = v%near(tn)
       call load_segment(slave, x, k, xs)
       nn = 0.0_wp
       do a = 1, nen
@@ -196,30 +212,18 @@ contains
         lo = min(lo, xs(:, a))
         hi = max(hi, xs(:, a))
       end do
-      ! Candidates: the master segments binned in every cell the slave
-      ! segment's box covers (sample points one cell apart reach them all).
+      ! Candidates: the listed master segments whose inflated box meets
+      ! the slave segment's box now (the test of the full search).
       ncand = 0
-      nx = ceiling((hi(1) - lo(1))/bins%cell)
-      ny = ceiling((hi(2) - lo(2))/bins%cell)
-      do iy = 0, ny
-        do ix = 0, nx
-          p = [min(lo(1) + real(ix, wp)*bins%cell, hi(1)), min(lo(2) + real(iy, wp)*bins%cell, hi(2))]
-          call query_bins(bins, p, first, last)
-          do q = first, last
-            l = bins%item(q)
-            if (w%mark(l)) cycle
-            if (bins%box(1, l) > hi(1) .or. bins%box(3, l) < lo(1) .or. &
-                bins%box(2, l) > hi(2) .or. bins%box(4, l) < lo(2)) cycle
-            w%mark(l) = .true.
-            ncand = ncand + 1
-            if (ncand > size(w%cand)) call grow_int(w%cand, 2*size(w%cand), ncand - 1)
-            w%cand(ncand) = l
-          end do
-        end do
+      do q = v%ptr(k), v%ptr(k + 1) - 1
+        l = v%item(q)
+        if (.not. verlet_overlaps(v, l, lo, hi)) cycle
+        ncand = ncand + 1
+        w%cand(ncand) = l
       end do
+      w%mbeg(k) = w%nment + 1
       do t = 1, ncand
         l = w%cand(t)
-        w%mark(l) = .false.
         ! Segmentation (method brief section 5): the master ends seen from
         ! the slave along its normal field, each corner projected once per
         ! slave segment.
@@ -227,9 +231,9 @@ contains
         xi2 = corner_xi(w%mcorner(2, l))
         call integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, w)
       end do
-      w%mptr(k + 1) = w%nment + 1
+      w%mend(k) = w%nment
     end do slave_segments
-    call find_corner_rows(slave, master, x, reach, w)
+    call find_corner_rows(slave, master, x, reach, v, w)
     call merge_uncovered(slave, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
@@ -237,16 +241,22 @@ contains
     ! length the weighted multiplier (G1 lambda)_j acts on, so that stresses
     ! (G1 lambda)_j / trib_j compare with node-to-segment's (and equal lambda
     ! for a uniform pressure even where G1 is not symmetric, Q8 edges).
-    w%len(1:slave%nnode) = 0.0_wp
-    w%trib(1:slave%nnode) = 0.0_wp
-    do k = 1, slave%nseg
+    do tn = 1, v%nnear
+      k = v%near(tn)
+      do a = 1, nen
+        w%len(w%pos(a, k)) = 0.0_wp
+        w%trib(w%pos(a, k)) = 0.0_wp
+      end do
+    end do
+    do tn = 1, v%nnear
+      k = v%near(tn)
       do a = 1, nen
         c = w%pos(a, k)
         w%len(c) = w%len(c) + sum(w%g1loc(1:nen, a, k))
         w%trib(c) = w%trib(c) + sum(w%g1loc(a, 1:nen, k))
       end do
     end do
-    call assemble_rows(slave, xpred, du, w, cs)
+    call assemble_rows(slave, xpred, du, v, w, cs)
   contains
     !> Slave parameter of master corner c on slave segment k (xs, nn): the
     !> root of project_along_field, computed once per (k, c). Its end values
@@ -275,18 +285,24 @@ contains
   end subroutine build_mortar
 
   !> Constraint rows in chain order from the per-segment integrals.
-  subroutine assemble_rows(slave, xpred, du, w, cs)
+  subroutine assemble_rows(slave, xpred, du, vl, w, cs)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: xpred(:,:), du(:,:)
+    type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cmin, cmax
     real(wp) :: v, tol
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
+    call cs_start(cs, slave%nnode + 2)
+    if (vl%nnear == 0) return
+    ! Chain nodes of the near segments (the others have no overlap).
+    cmin = w%pos(1, vl%near(1))
+    cmax = w%pos(2, vl%near(vl%nnear))
     m = 0
-    do c = 1, slave%nnode
+    do c = cmin, cmax
       if (w%len(c) > tol) then
         m = m + 1
         w%cidx(c) = m
@@ -299,9 +315,8 @@ contains
         if (w%pos(1, w%crow_seg(t)) == c) m = m + 1
       end do
     end do
-    call cs_start(cs, slave%nnode + 2)
     band = 0
-    do c = 1, slave%nnode
+    do c = cmin, cmax
       call corner_rows_after(c)
       j = w%cidx(c)
       if (j == 0) cycle
@@ -324,7 +339,7 @@ contains
           end if
         end do
         ! Master entries +G21(a, j).
-        do e = w%mptr(k), w%mptr(k + 1) - 1
+        do e = w%mbeg(k), w%mend(k)
           if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
         end do
       end do
@@ -490,7 +505,7 @@ contains
         if (target == 0) cycle
         w%g1loc(1:nen, target, k) = w%g1loc(1:nen, target, k) + w%g1loc(1:nen, b, k)
         w%g1loc(1:nen, b, k) = 0.0_wp
-        do e = w%mptr(k), w%mptr(k + 1) - 1
+        do e = w%mbeg(k), w%mend(k)
           if (w%ment_loc(e) == b) w%ment_loc(e) = target
         end do
       end do
@@ -506,12 +521,13 @@ contains
   !> 13). A point row for each end corner of an open master that projects
   !> strictly inside a slave segment (along the slave normal field, within
   !> reach, the master's end segment facing the slave) keeps g(xi_c) >= 0.
-  subroutine find_corner_rows(slave, master, x, reach, w)
+  subroutine find_corner_rows(slave, master, x, reach, vl, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:)
     real(wp), intent(in) :: reach
+    type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: t, k, a, l, cn, nen, kbest
+    integer :: t, k, a, l, cn, nen, kbest, tn
     real(wp) :: pc(2), xs(2, 3), nn(2, 3), xm(2, 3), flo, fhi, xi, ps(2), ts(2), n(2), dn(2), g, best, &
       pm(2), tm(2), xibest, nbest(2)
     w%ncrow = 0
@@ -527,7 +543,10 @@ contains
       kbest = 0
       xibest = 0.0_wp
       nbest = 0.0_wp
-      do k = 1, slave%nseg
+      ! A corner within reach of a slave segment makes that segment near
+      ! (the master's end segment is in the slave segment's list).
+      do tn = 1, vl%nnear
+        k = vl%near(tn)
         call load_segment(slave, x, k, xs)
         nn = 0.0_wp
         do a = 1, nen
@@ -560,32 +579,38 @@ contains
     end do
   end subroutine find_corner_rows
 
-  !> Slave nodal normals: the normalised mean of the outward unit normals of
-  !> the segments meeting at the node, each taken at the node (for 3-node
-  !> segments the quadratic's own tangent there).
-  subroutine slave_normals(slave, x, w)
+  !> Slave nodal normals at the nodes of the near segments: the normalised
+  !> mean of the outward unit normals of the segments meeting at the node,
+  !> each taken at the node (for 3-node segments the quadratic's own
+  !> tangent there), summed in chain order. Also clears their `covered`.
+  subroutine slave_normals(slave, x, vl, w)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: x(:,:)
+    type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c
-    real(wp) :: xs(2, 3), ns(2)
-    w%nrm(:, 1:slave%nnode) = 0.0_wp
-    do k = 1, slave%nseg
-      call load_segment(slave, x, k, xs)
-      if (slave%nen_seg == 2) then
-        ! A straight segment has one normal: evaluate it once for both ends.
-        ns = outward_normal(2, xs, 0.0_wp)
-        w%nrm(:, w%pos(1, k)) = w%nrm(:, w%pos(1, k)) + ns
-        w%nrm(:, w%pos(2, k)) = w%nrm(:, w%pos(2, k)) + ns
-        cycle
-      end if
+    integer :: k, a, c, tn, t, kk
+    real(wp) :: xs(2, 3)
+    w%nstep = w%nstep + 1
+    do tn = 1, vl%nnear
+      k = vl%near(tn)
       do a = 1, slave%nen_seg
         c = w%pos(a, k)
-        w%nrm(:, c) = w%nrm(:, c) + outward_normal(slave%nen_seg, xs, NODE_XI(a))
+        if (w%stamp(c) == w%nstep) cycle
+        w%stamp(c) = w%nstep
+        w%covered(c) = .false.
+        w%nrm(:, c) = 0.0_wp
+        do t = 1, w%nadj(c)
+          kk = w%adj_seg(t, c)
+          call load_segment(slave, x, kk, xs)
+          if (slave%nen_seg == 2) then
+            ! A straight segment has one normal, the same at both ends.
+            w%nrm(:, c) = w%nrm(:, c) + outward_normal(2, xs, 0.0_wp)
+          else
+            w%nrm(:, c) = w%nrm(:, c) + outward_normal(slave%nen_seg, xs, NODE_XI(w%adj_loc(t, c)))
+          end if
+        end do
+        w%nrm(:, c) = w%nrm(:, c)/max(norm2(w%nrm(:, c)), tiny(1.0_wp))
       end do
-    end do
-    do c = 1, slave%nnode
-      w%nrm(:, c) = w%nrm(:, c)/max(norm2(w%nrm(:, c)), tiny(1.0_wp))
     end do
   end subroutine slave_normals
 

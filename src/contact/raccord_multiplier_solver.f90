@@ -14,7 +14,9 @@
 !> functions min(F, c g) and the friction projection): for fixed open /
 !> stick / slip sets the conditions are linear, and the unknowns
 !> (lambda_j, gn_j [, tau_j, gt_j]) interleaved node by node give one banded
-!> system, solved by LAPACK dgbsv. The sets are updated from
+!> system, solved by a banded LU with partial pivoting (raccord_band_solver,
+!> LAPACK's dgbsv algorithm without the per-column BLAS calls). The sets
+!> are updated from
 !>   active:  F_j - c_j gn_j > 0,     stick: |T_j - c_j gt_j| <= mu F_j,
 !> (F = G1 lambda, T = G1 tau, c_j = G1_jj^2 / (dt^2 Knn_jj)) until they no
 !> longer change; the solution then satisfies (19) exactly.
@@ -25,6 +27,7 @@
 module raccord_multiplier_solver
   use raccord_kinds, only: wp
   use raccord_constraint_set, only: constraint_set_t, G1_MAX_BAND
+  use raccord_band_solver, only: band_solve
   implicit none
   private
 
@@ -42,6 +45,9 @@ module raccord_multiplier_solver
     real(wp), allocatable :: knn(:,:), knt(:,:), ktn(:,:), ktt(:,:)   !< (-kb:kb, m)
     integer :: kb = 0
     real(wp), allocatable :: ab(:,:), rhs(:)
+    integer, allocatable :: var(:,:)     !< (4, m) unknown index of lambda_j, gn_j, tau_j, gt_j (0: eliminated)
+    integer, allocatable :: vfirst(:)    !< (m + 1) first unknown of constraint j
+    integer, allocatable :: fcol(:), lcol(:), ext(:)   !< per row: first, last column; band_solve scratch
     integer, allocatable :: ipiv(:)
     integer, allocatable :: node_first(:), node_last(:)   !< per global node: rows touching it
     integer, allocatable :: node_ptr(:), node_row(:), node_ent(:)   !< node -> (row, entry) lists
@@ -56,14 +62,6 @@ module raccord_multiplier_solver
 
   public :: solve_multipliers
 
-  interface
-    subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
-      import :: wp
-      integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
-      real(wp), intent(inout) :: ab(ldab, *), b(ldb, *)
-      integer, intent(out) :: ipiv(*), info
-    end subroutine dgbsv
-  end interface
 
 contains
 
@@ -105,19 +103,22 @@ contains
       end if
     end do
     bw = max(w%kb, cs%g1_band)
-    n = nu*m
-    kl = nu*(bw + 1) - 1
-    ku = kl
-    ldab = 2*kl + ku + 1
-    call ensure2(w%ab, ldab, n)
-    call ensure1(w%rhs, n)
-    call ensure_i(w%ipiv, n)
+    call ensure_i2(w%var, 4, m)
+    call ensure_i(w%vfirst, m + 1)
+    call ensure1(w%rhs, nu*m)
+    call ensure_i(w%ipiv, nu*m)
+    call ensure_i(w%fcol, nu*m)
+    call ensure_i(w%lcol, nu*m)
+    call ensure_i(w%ext, 2*nu*m)
 
     do it = 1, max_iter
       w%iterations = it
       w%status_old(1:m) = w%status(1:m)
-      call assemble(cs, dt, mu, friction, nu, kl, ku, w)
-      call dgbsv(n, kl, ku, 1, w%ab, ldab, w%ipiv, w%rhs, n, info)
+      call layout(m, friction, bw, w, n, kl, ku)
+      ldab = 2*kl + ku + 1
+      call ensure2(w%ab, ldab, n)
+      call assemble(cs, dt, mu, friction, bw, kl, ku, w)
+      call band_solve(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%rhs, w%fcol, w%lcol, w%ext, info)
       if (info /= 0) then
         ! A singular system means constraints that cannot move: report as
         ! not converged with the multipliers of the previous iterate.
@@ -126,14 +127,14 @@ contains
         exit
       end if
       do j = 1, m
-        w%lam(j) = w%rhs(nu*(j - 1) + 1)
-        w%gn(j) = w%rhs(nu*(j - 1) + 2)
+        w%lam(j) = w%rhs(w%var(1, j))
+        w%gn(j) = 0.0_wp
+        if (w%var(2, j) > 0) w%gn(j) = w%rhs(w%var(2, j))
+        w%tau(j) = 0.0_wp
+        w%gt(j) = 0.0_wp
         if (friction) then
-          w%tau(j) = w%rhs(nu*(j - 1) + 3)
-          w%gt(j) = w%rhs(nu*(j - 1) + 4)
-        else
-          w%tau(j) = 0.0_wp
-          w%gt(j) = 0.0_wp
+          w%tau(j) = w%rhs(w%var(3, j))
+          if (w%var(4, j) > 0) w%gt(j) = w%rhs(w%var(4, j))
         end if
       end do
       call band_matvec(cs, w%lam, w%fn)
@@ -234,83 +235,133 @@ contains
     if (abs(j - k) <= cs%g1_band) g1_at = cs%g1(j - k, k)
   end function g1_at
 
-  !> The banded linear system for the current sets, rows scaled to unit
-  !> largest entry (the blocks mix lengths and inverse masses).
-  subroutine assemble(cs, dt, mu, friction, nu, kl, ku, w)
+  !> Unknowns for the current sets, constraint by constraint in chain
+  !> order: lambda_j; gn_j only when j is open (in contact gn_j = 0, its
+  !> row and column drop out); with friction tau_j, and gt_j unless j
+  !> sticks (gt_j = 0). Eliminating the known gaps and slips halves the
+  !> unknowns of a contact zone in stick and narrows the band, and the
+  !> banded LU costs n kl (kl + ku). Each kept condition row takes the
+  !> index of its unknown: the gap definition that of lambda_j, the normal
+  !> condition that of gn_j, the slip definition that of tau_j, the
+  !> tangential condition that of gt_j. Returns the size and the band.
+  subroutine layout(m, friction, bw, w, n, kl, ku)
+    integer, intent(in) :: m, bw
+    logical, intent(in) :: friction
+    type(solver_work_t), intent(inout) :: w
+    integer, intent(out) :: n, kl, ku
+    integer :: j, i
+    n = 0
+    do j = 1, m
+      w%vfirst(j) = n + 1
+      n = n + 1
+      w%var(1, j) = n
+      w%var(2, j) = 0
+      if (w%status(j) == ST_OPEN) then
+        n = n + 1
+        w%var(2, j) = n
+      end if
+      w%var(3:4, j) = 0
+      if (friction) then
+        n = n + 1
+        w%var(3, j) = n
+        if (w%status(j) /= ST_STICK) then
+          n = n + 1
+          w%var(4, j) = n
+        end if
+      end if
+    end do
+    w%vfirst(m + 1) = n + 1
+    ! Rows of j couple to the unknowns of k = j - bw .. j + bw.
+    kl = 0
+    ku = 0
+    do j = 1, m
+      ku = max(ku, w%vfirst(min(m, j + bw) + 1) - 1 - w%vfirst(j))
+      kl = max(kl, w%vfirst(j + 1) - 1 - w%vfirst(max(1, j - bw)))
+      do i = w%vfirst(j), w%vfirst(j + 1) - 1
+        w%fcol(i) = w%vfirst(max(1, j - bw))
+        w%lcol(i) = w%vfirst(min(m, j + bw) + 1) - 1
+      end do
+    end do
+  end subroutine layout
+
+  !> The banded linear system for the current sets (unknowns of layout),
+  !> rows scaled to unit largest entry (the blocks mix lengths and inverse
+  !> masses).
+  subroutine assemble(cs, dt, mu, friction, bw, kl, ku, w)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt, mu
     logical, intent(in) :: friction
-    integer, intent(in) :: nu, kl, ku
+    integer, intent(in) :: bw, kl, ku
     type(solver_work_t), intent(inout) :: w
-    integer :: j, k, m, r, bw
+    integer :: j, k, m, r, n
     real(wp) :: dt2
     m = cs%m
     dt2 = dt*dt
-    bw = max(w%kb, cs%g1_band)
-    w%ab(:, 1:nu*m) = 0.0_wp
+    n = w%vfirst(m + 1) - 1
+    w%ab(1:2*kl + ku + 1, 1:n) = 0.0_wp
     do j = 1, m
       ! Gap definition: G1' gn - dt^2 (Knn lambda + Knt tau) = g_w*. The
       ! nodal gap pairs with the nodal force F = G1 lambda (F . gn = lambda . g_w),
       ! so it is G1' that maps it to the weighted gap; G1 is not symmetric
       ! on Q8 edges or where the contact zone ends inside a P0 dual cell.
-      r = nu*(j - 1) + 1
+      ! The gaps of constraints in contact are 0 and drop out.
+      r = w%var(1, j)
       do k = max(1, j - bw), min(m, j + bw)
-        call put(r, nu*(k - 1) + 2, g1_at(cs, k, j))
+        if (w%var(2, k) > 0) call put(r, w%var(2, k), g1_at(cs, k, j))
         if (abs(j - k) <= w%kb) then
-          call put(r, nu*(k - 1) + 1, -dt2*w%knn(k - j, j))
-          if (friction) call put(r, nu*(k - 1) + 3, -dt2*w%knt(k - j, j))
+          call put(r, w%var(1, k), -dt2*w%knn(k - j, j))
+          if (friction) call put(r, w%var(3, k), -dt2*w%knt(k - j, j))
         end if
       end do
       w%rhs(r) = cs%gap_w(j)
-      ! Normal condition: gn_j = 0 (in contact) or (G1 lambda)_j = 0 (open).
-      r = nu*(j - 1) + 2
-      w%rhs(r) = 0.0_wp
-      if (w%status(j) /= ST_OPEN) then
-        call put(r, r, 1.0_wp)
-      else
+      ! Normal condition of an open constraint: (G1 lambda)_j = 0 (in
+      ! contact, gn_j = 0 was eliminated).
+      if (w%var(2, j) > 0) then
+        r = w%var(2, j)
+        w%rhs(r) = 0.0_wp
         do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
-          call put(r, nu*(k - 1) + 1, g1_at(cs, j, k))
+          call put(r, w%var(1, k), g1_at(cs, j, k))
         end do
       end if
       if (.not. friction) cycle
       ! Slip definition: G1' gt - dt^2 (Ktn lambda + Ktt tau) = s_w*.
-      r = nu*(j - 1) + 3
+      r = w%var(3, j)
       do k = max(1, j - bw), min(m, j + bw)
-        call put(r, nu*(k - 1) + 4, g1_at(cs, k, j))
+        if (w%var(4, k) > 0) call put(r, w%var(4, k), g1_at(cs, k, j))
         if (abs(j - k) <= w%kb) then
-          call put(r, nu*(k - 1) + 1, -dt2*w%ktn(k - j, j))
-          call put(r, nu*(k - 1) + 3, -dt2*w%ktt(k - j, j))
+          call put(r, w%var(1, k), -dt2*w%ktn(k - j, j))
+          call put(r, w%var(3, k), -dt2*w%ktt(k - j, j))
         end if
       end do
       w%rhs(r) = cs%slip_w(j)
-      ! Tangential condition: open (G1 tau)_j = 0; stick gt_j = 0;
-      ! slip (G1 tau)_j - mu sigma_j (G1 lambda)_j = 0.
-      r = nu*(j - 1) + 4
+      ! Tangential condition: open (G1 tau)_j = 0; slip (G1 tau)_j - mu
+      ! sigma_j (G1 lambda)_j = 0; stick gt_j = 0 (eliminated).
+      if (w%var(4, j) == 0) cycle
+      r = w%var(4, j)
       w%rhs(r) = 0.0_wp
-      select case (w%status(j))
-      case (ST_STICK)
-        call put(r, r, 1.0_wp)
-      case (ST_SLIP)
+      if (w%status(j) == ST_SLIP) then
         do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
-          call put(r, nu*(k - 1) + 3, g1_at(cs, j, k))
-          call put(r, nu*(k - 1) + 1, -mu*w%sigma(j)*g1_at(cs, j, k))
+          call put(r, w%var(3, k), g1_at(cs, j, k))
+          call put(r, w%var(1, k), -mu*w%sigma(j)*g1_at(cs, j, k))
         end do
-      case default
+      else
         do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
-          call put(r, nu*(k - 1) + 3, g1_at(cs, j, k))
+          call put(r, w%var(3, k), g1_at(cs, j, k))
         end do
-      end select
+      end if
     end do
-    call scale_rows(nu*m, kl, ku, w)
+    call scale_rows(n, kl, ku, w)
   contains
     subroutine put(i, jj, a)
       integer, intent(in) :: i, jj
       real(wp), intent(in) :: a
-      ! LAPACK general band storage for dgbsv: AB(kl+ku+1+i-j, j) = A(i, j).
+      ! LAPACK general band storage (dgbsv): AB(kl+ku+1+i-j, j) = A(i, j).
       w%ab(kl + ku + 1 + i - jj, jj) = w%ab(kl + ku + 1 + i - jj, jj) + a
     end subroutine put
   end subroutine assemble
 
+  !> Scale each row to unit largest entry, by one reciprocal per row (a
+  !> division per band entry was a quarter of the solve).
   subroutine scale_rows(n, kl, ku, w)
     integer, intent(in) :: n, kl, ku
     type(solver_work_t), intent(inout) :: w
@@ -318,7 +369,7 @@ contains
     real(wp) :: s
     do i = 1, n
       s = 0.0_wp
-      do jj = max(1, i - kl), min(n, i + ku)
+      do jj = w%fcol(i), w%lcol(i)
         s = max(s, abs(w%ab(kl + ku + 1 + i - jj, jj)))
       end do
       if (s <= 0.0_wp) then
@@ -327,10 +378,11 @@ contains
         w%rhs(i) = 0.0_wp
         cycle
       end if
-      do jj = max(1, i - kl), min(n, i + ku)
-        w%ab(kl + ku + 1 + i - jj, jj) = w%ab(kl + ku + 1 + i - jj, jj)/s
+      s = 1.0_wp/s
+      do jj = w%fcol(i), w%lcol(i)
+        w%ab(kl + ku + 1 + i - jj, jj) = w%ab(kl + ku + 1 + i - jj, jj)*s
       end do
-      w%rhs(i) = w%rhs(i)/s
+      w%rhs(i) = w%rhs(i)*s
     end do
   end subroutine scale_rows
 
@@ -454,15 +506,31 @@ contains
     allocate(a(-max(kb, 2):max(kb, 2), max(m, 16)))
   end subroutine ensure_band
 
+  !> Grow-only: the band's height changes with the sets.
   subroutine ensure2(a, n1, n2)
     real(wp), allocatable, intent(inout) :: a(:,:)
     integer, intent(in) :: n1, n2
+    integer :: c1, c2
+    c1 = n1
+    c2 = max(n2, 1)
     if (allocated(a)) then
-      if (size(a, 1) == n1 .and. size(a, 2) >= n2) return
+      if (size(a, 1) >= n1 .and. size(a, 2) >= n2) return
+      c1 = max(c1, size(a, 1))
+      c2 = max(c2, size(a, 2))
       deallocate(a)
     end if
-    allocate(a(n1, max(n2, 1)))
+    allocate(a(c1, c2))
   end subroutine ensure2
+
+  subroutine ensure_i2(a, n1, n2)
+    integer, allocatable, intent(inout) :: a(:,:)
+    integer, intent(in) :: n1, n2
+    if (allocated(a)) then
+      if (size(a, 1) >= n1 .and. size(a, 2) >= n2) return
+      deallocate(a)
+    end if
+    allocate(a(n1, max(n2, 16)))
+  end subroutine ensure_i2
 
   subroutine ensure1(a, n)
     real(wp), allocatable, intent(inout) :: a(:)

@@ -25,7 +25,7 @@ module raccord_node_to_segment
   use raccord_kinds, only: wp
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
-  use raccord_contact_search, only: bins_t, build_bins, query_bins
+  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
   use raccord_mortar_segments, only: outward_normal, normal_field, project_along_field, cross2, NODE_XI
@@ -39,15 +39,18 @@ contains
   !> Constraints of the slave nodes that project on the master within
   !> `reach` of it (gap between -reach and +reach): geometry on positions x
   !> (t(n)), gaps on xpred (predicted t(n+1)), slip on the increments du.
-  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, bins, trib, nodal_normal, cs)
+  !> Candidates come from the lists of raccord_contact_verlet; only the
+  !> slave nodes with candidates, and the master segments near them, are
+  !> visited (the pairs are those of the full search, in the same order).
+  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, v, trib, nodal_normal, cs)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
     real(wp), intent(in) :: reach
-    type(bins_t), intent(inout) :: bins
+    type(verlet_t), intent(inout) :: v
     real(wp), intent(inout) :: trib(:)           !< (slave%nnode) scratch: tributary lengths
     real(wp), intent(inout) :: nodal_normal(:,:) !< (2, nnode) scratch: master nodal normals
     type(constraint_set_t), intent(inout) :: cs
-    integer :: i, p, first, last, q, k, best, nen, a
+    integer :: i, p, q, k, best, nen, a, tn
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
     real(wp) :: nn(2, 3), dnf(2)
     integer :: k2
@@ -58,20 +61,19 @@ contains
     logical :: beyond
 
     nen = master%nen_seg
-    call master_normals(master, x, nodal_normal)
-    call build_bins(bins, x, master%seg, nen, reach)
-    call tributary_lengths(slave, x, trib)
+    call verlet_refresh(v, x, slave, master, reach)
+    call master_normals(master, x, v, nodal_normal)
+    call tributary_lengths(slave, x, trib, v%snear(1:v%nsnear))
     call cs_start(cs, slave%nnode)
-    do i = 1, slave%nnode
+    near_nodes: do tn = 1, v%nnear
+      i = v%near(tn)
       p = slave%node(i)
       xp = x(:, p)
-      call query_bins(bins, xp, first, last)
       best = 0
       best_dist = huge(1.0_wp)
-      do q = first, last
-        k = bins%item(q)
-        if (xp(1) < bins%box(1, k) .or. xp(1) > bins%box(3, k) .or. &
-            xp(2) < bins%box(2, k) .or. xp(2) > bins%box(4, k)) cycle
+      do q = v%ptr(i), v%ptr(i + 1) - 1
+        k = v%item(q)
+        if (.not. verlet_overlaps(v, k, xp, xp)) cycle
         call load_segment(master, x, k, xs)
         call project_on_segment(nen, xs, xp, s, foot, tang)
         ! A foot beyond the segment's end belongs to the neighbour, or, at
@@ -94,7 +96,7 @@ contains
           best_t = tang
         end if
       end do
-      if (best == 0) cycle
+      if (best == 0) cycle near_nodes
       ! Foot and normal from the continuous normal field of the closest
       ! segment; past its end, the neighbour's field takes over.
       k = best
@@ -118,7 +120,7 @@ contains
       call load_segment(master, xpred, best, xs)
       call segment_point(nen, xs, best_s, foot, tang)
       g = dot_product(xpred(:, p) - foot, n_m)
-      if (g > reach .or. g < -reach) cycle
+      if (g > reach .or. g < -reach) cycle near_nodes
       call cs_add_row(cs, i, p, -n_m, trib(i), slave%s0(i))
       call cs_add_entry(cs, p, -1.0_wp)
       call shape_line(nen, best_s, sh, dsh)
@@ -126,7 +128,7 @@ contains
         call cs_add_entry(cs, master%seg(a, best), sh(a))
       end do
       call cs_finish_row(cs, xpred, du)
-    end do
+    end do near_nodes
   contains
     !> Parameter s on master segment kk whose interpolated normal passes
     !> through the slave node (t(n) geometry), and the unit normal there.
@@ -153,29 +155,51 @@ contains
     end subroutine field_foot
   end subroutine build_node_to_segment
 
-  !> Outward unit normal of the master at each of its nodes: the mean of
-  !> the normals of the segments meeting there (of its segment for a mid node).
-  subroutine master_normals(master, x, nodal_normal)
+  !> Outward unit normal of the master at its nodes: the mean of the
+  !> normals of the segments meeting there (of its segment for a mid node),
+  !> summed in chain order. Taken on the listed segments dilated by two
+  !> (v%mdil), which is complete at the nodes of the listed segments and
+  !> of their neighbours, the ones field_foot reads.
+  subroutine master_normals(master, x, v, nodal_normal)
     type(contact_surface_t), intent(in) :: master
     real(wp), intent(in) :: x(:,:)
+    type(verlet_t), intent(in) :: v
     real(wp), intent(inout) :: nodal_normal(:,:)
     real(wp) :: xs(2, 3)
-    integer :: k, a, q
-    do q = 1, master%nnode
-      nodal_normal(:, master%node(q)) = 0.0_wp
+    integer :: k, a, t
+    do t = 1, v%nmdil
+      k = v%mdil(t)
+      do a = 1, master%nen_seg
+        nodal_normal(:, master%seg(a, k)) = 0.0_wp
+      end do
     end do
-    do k = 1, master%nseg
+    do t = 1, v%nmdil
+      k = v%mdil(t)
       call load_segment(master, x, k, xs)
       do a = 1, master%nen_seg
         nodal_normal(:, master%seg(a, k)) = nodal_normal(:, master%seg(a, k)) + &
           outward_normal(master%nen_seg, xs, NODE_XI(a))
       end do
     end do
-    do q = 1, master%nnode
-      associate (v => nodal_normal(:, master%node(q)))
-        v = v/max(norm2(v), tiny(1.0_wp))
-      end associate
+    ! Normalise each node once: the end and mid nodes of every segment, and
+    ! the start node where the chain's previous segment is not in the set
+    ! (there it is that segment's end node).
+    do t = 1, v%nmdil
+      k = v%mdil(t)
+      do a = 1, master%nen_seg
+        if (a == 1 .and. previous_in_set(t, k)) cycle
+        associate (nv => nodal_normal(:, master%seg(a, k)))
+          nv = nv/max(norm2(nv), tiny(1.0_wp))
+        end associate
+      end do
     end do
+  contains
+    logical function previous_in_set(t, k)
+      integer, intent(in) :: t, k
+      previous_in_set = .false.
+      if (t > 1) previous_in_set = v%mdil(t - 1) == k - 1
+      if (k == 1 .and. master%closed) previous_in_set = v%mdil(v%nmdil) == master%nseg
+    end function previous_in_set
   end subroutine master_normals
 
   subroutine load_segment(surf, x, k, xs)
@@ -193,17 +217,30 @@ contains
   !> Length of surface carried by each node: integral of its shape
   !> function along the current surface (half of each neighbouring segment
   !> for 2-node segments; 1/6, 2/3, 1/6 of a straight 3-node one).
-  subroutine tributary_lengths(surf, x, trib)
+  subroutine tributary_lengths(surf, x, trib, segs)
     type(contact_surface_t), intent(in) :: surf
     real(wp), intent(in) :: x(:,:)
     real(wp), intent(inout) :: trib(:)
+    integer, intent(in), optional :: segs(:)   !< only these segments (ascending), and their nodes
     real(wp), parameter :: gs(3) = [-0.774596669241483377_wp, 0.0_wp, 0.774596669241483377_wp]
     real(wp), parameter :: gw(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
     real(wp) :: xs(2, 3), xx(2), dx(2), sh(3), dsh(3)
-    integer :: k, g, a, stride
-    trib(1:surf%nnode) = 0.0_wp
+    integer :: k, g, a, stride, t, nk
     stride = surf%nen_seg - 1
-    do k = 1, surf%nseg
+    if (present(segs)) then
+      nk = size(segs)
+      do t = 1, nk
+        do a = 1, surf%nen_seg
+          trib(chain_position(surf, segs(t), a, stride)) = 0.0_wp
+        end do
+      end do
+    else
+      nk = surf%nseg
+      trib(1:surf%nnode) = 0.0_wp
+    end if
+    do t = 1, nk
+      k = t
+      if (present(segs)) k = segs(t)
       call load_segment(surf, x, k, xs)
       do g = 1, 3
         call segment_point(surf%nen_seg, xs, gs(g), xx, dx)

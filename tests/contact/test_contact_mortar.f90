@@ -18,7 +18,7 @@ program test_contact_mortar
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: advance_state
   use raccord_contact_surface, only: contact_surface_t, build_contact_surface
-  use raccord_contact_search, only: bins_t
+  use raccord_contact_verlet, only: verlet_t, verlet_init
   use raccord_constraint_set, only: constraint_set_t
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs
   use raccord_mortar, only: mortar_work_t, init_mortar, build_mortar
@@ -59,7 +59,7 @@ contains
     type(failure_t), allocatable, intent(inout) :: failure
     type(mesh_t) :: ma, mb
     type(mortar_work_t) :: w
-    type(bins_t) :: bins
+    type(verlet_t) :: verlet
     type(error_t) :: err
     real(wp), allocatable :: du(:,:)
     call rect_mesh(ma, etype, nm, 2, lm, 0.5_wp, x0=xm0, y0=-gap)
@@ -73,7 +73,8 @@ contains
       return
     end if
     allocate(du(2, mesh%nnode), source=0.0_wp)
-    call build_mortar(slave, master, mesh%x, mesh%x, du, 0.25_wp, mult, bins, cs, w)
+    call verlet_init(verlet, slave, master, .true., 0.25_wp)
+    call build_mortar(slave, master, mesh%x, mesh%x, du, 0.25_wp, mult, verlet, cs, w)
   end subroutine coupling
 
   !> G1(i, j) in slave chain numbering (i, j chain positions) from the rows.

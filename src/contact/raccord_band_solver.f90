@@ -1,0 +1,136 @@
+!> Banded LU with partial pivoting and the solve with it, for the small
+!> banded systems of the multiplier solve (raccord_multiplier_solver): the
+!> algorithm of LAPACK's unblocked dgbtf2 and dgbtrs (row interchanges
+!> within the band, fill-in kept in the kl extra rows of the storage) in
+!> plain loops. The contact systems have a few hundred unknowns and a half
+!> bandwidth of 3 to 20; there the reference BLAS spends most of its time in
+!> the call overhead of one idamax, dswap, dscal and dger per column (issue
+!> #16: the solve was half of the contact time with friction). The
+!> arithmetic is that of dgbsv, so results agree with it to round-off.
+!>
+!> Storage is LAPACK's general band form: A(i, j) in ab(kl + ku + 1 + i - j, j),
+!> rows 1:kl of ab are workspace for the fill-in.
+module raccord_band_solver
+  use raccord_kinds, only: wp
+  implicit none
+  private
+
+  public :: band_solve
+
+contains
+
+  !> Solve A x = b in place (b becomes x); info = j > 0 when U(j, j) = 0
+  !> (A singular; b is then left partly transformed). ab holds A in band
+  !> form and zeros elsewhere (the kl fill rows too). Row i of A has its
+  !> nonzeros in columns fcol(i) .. lcol(i), within the band, with fcol
+  !> nondecreasing up to round-off of the profile (any row order is right,
+  !> a monotone one is fast). The elimination of column j then touches only
+  !> the rows that reach it and the columns the pivot row reaches, so the
+  !> work follows the local band: a contact zone in stick has half the
+  !> unknowns per node of an open one, and pays for its own band only.
+  pure subroutine band_solve(n, kl, ku, ab, ipiv, b, fcol, lcol, ext, info)
+    integer, intent(in) :: n, kl, ku
+    real(wp), intent(inout) :: ab(:,:)        !< (2*kl + ku + 1, >= n)
+    integer, intent(inout) :: ipiv(:)         !< (>= n) pivot rows
+    real(wp), intent(inout) :: b(:)           !< (>= n) right-hand side in, solution out
+    integer, intent(in) :: fcol(:), lcol(:)   !< (n) first and last nonzero column of each row
+    integer, intent(inout) :: ext(:)          !< (>= 2 n) scratch: row extents, then last row reaching each column
+    integer, intent(out) :: info
+    integer :: kv, j, i, jp, km, jj, l, off, last, jl, r
+    real(wp) :: amax, piv_inv, t, y
+
+    info = 0
+    kv = ku + kl
+    ! ext(n + c): the last row whose first column is <= c (rows below it
+    ! are zero in column c until it is eliminated).
+    ext(n + 1:2*n) = 0
+    do i = 1, n
+      ext(n + fcol(i)) = max(ext(n + fcol(i)), i)
+    end do
+    last = 0
+    do j = 1, n
+      last = max(last, ext(n + j))
+      ext(n + j) = last
+    end do
+    ! ext(i): the last column with a nonzero in the row now at position i
+    ! (grows with fill, moves with the row interchanges).
+    ext(1:n) = lcol(1:n)
+    columns: do j = 1, n
+      km = min(kl, n - j, ext(n + j) - j)
+      ! Pivot: the first entry of largest magnitude in column j below the diagonal.
+      jp = 1
+      amax = abs(ab(kv + 1, j))
+      do i = 2, km + 1
+        if (abs(ab(kv + i, j)) > amax) then
+          amax = abs(ab(kv + i, j))
+          jp = i
+        end if
+      end do
+      ipiv(j) = jp + j - 1
+      if (ab(kv + jp, j) == 0.0_wp) then
+        if (info == 0) info = j
+        cycle columns
+      end if
+      if (jp /= 1) then
+        ! Swap rows j and j + jp - 1 over the columns either reaches (a row
+        ! runs along a diagonal of the band storage).
+        r = j + jp - 1
+        jl = max(ext(j), ext(r))
+        do jj = 0, jl - j
+          t = ab(kv + jp - jj, j + jj)
+          ab(kv + jp - jj, j + jj) = ab(kv + 1 - jj, j + jj)
+          ab(kv + 1 - jj, j + jj) = t
+        end do
+        l = ext(j)
+        ext(j) = ext(r)
+        ext(r) = l
+      end if
+      if (km > 0) then
+        piv_inv = 1.0_wp/ab(kv + 1, j)
+        ab(kv + 2:kv + km + 1, j) = piv_inv*ab(kv + 2:kv + km + 1, j)
+        ! Rank-one update of the rows below over the pivot row's columns.
+        jl = min(ext(j), n)
+        do jj = 1, jl - j
+          y = ab(kv + 1 - jj, j + jj)
+          if (y == 0.0_wp) cycle
+          off = kv + 1 - jj
+          do i = 1, km
+            ab(off + i, j + jj) = ab(off + i, j + jj) - ab(kv + 1 + i, j)*y
+          end do
+        end do
+        do i = j + 1, j + km
+          ext(i) = max(ext(i), jl)
+        end do
+      end if
+      ! Keep km for the forward substitution (column j of L).
+      ext(n + j) = j + km
+    end do columns
+    if (info /= 0) return
+
+    ! Forward: L with the row interchanges.
+    do j = 1, n - 1
+      km = ext(n + j) - j
+      l = ipiv(j)
+      if (l /= j) then
+        t = b(l)
+        b(l) = b(j)
+        b(j) = t
+      end if
+      t = b(j)
+      if (t == 0.0_wp) cycle
+      do i = 1, km
+        b(j + i) = b(j + i) - ab(kv + 1 + i, j)*t
+      end do
+    end do
+    ! Backward: U, upper band of width kl + ku.
+    do j = n, 1, -1
+      if (b(j) == 0.0_wp) cycle
+      b(j) = b(j)/ab(kv + 1, j)
+      t = b(j)
+      l = kv + 1 - j
+      do i = j - 1, max(1, j - kv), -1
+        b(i) = b(i) - t*ab(l + i, j)
+      end do
+    end do
+  end subroutine band_solve
+end module raccord_band_solver
