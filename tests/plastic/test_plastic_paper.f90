@@ -32,15 +32,16 @@ program test_plastic_paper
     CCX_WORK = 78.851_wp
   !> Tolerances, from what separates the two models on this mesh, measured
   !> with raccord (doc/reproduction.md): the contact discretisation (mortar
-  !> against node-to-segment: force 1.6 %, residual 0.5 %, peak 2.7 %), the
+  !> against node-to-segment: force 1.2 %, dent 0.5 %, peak 2.7 %), the
   !> volumetric treatment (raccord's mean dilatation against the full
-  !> integration of ccx's bricks: force 3.3 %, residual 2.7 %, peak 1.8 %,
+  !> integration of ccx's bricks: force 3.7 %, dent 2.8 %, peak 1.8 %,
   !> half of each taken), and the dynamics of the explicit run (a 4x
-  !> slower load: force 0.6 %, residual 1.0 %, peak 1.8 %); roughly their sum.
+  !> slower load: force 0.4 %, dent 1.0 %, peak 1.8 %); their sums, 3.5 %,
+  !> 2.9 % and 5.4 %, rounded to 3.5 %, 3 % and 6 %.
   !> They still catch a wrong law: a yield stress 10 % high moves the force
   !> by 10 %, the residual depth by 6 % and the peak by 9 %; perfect
   !> plasticity (H = 0) moves the force by 5 % and the peak by 10 %.
-  real(wp), parameter :: FORCE_TOL = 0.03_wp, DENT_TOL = 0.03_wp, PEAK_TOL = 0.07_wp, WORK_TOL = 0.02_wp
+  real(wp), parameter :: FORCE_TOL = 0.035_wp, DENT_TOL = 0.03_wp, PEAK_TOL = 0.06_wp, WORK_TOL = 0.02_wp
 
   ! save: the test procedures passed to run_tests use these, and static
   ! storage spares them a trampoline (and the program an executable stack).
