@@ -149,10 +149,10 @@ deck finite_mortar_p1_slave_block $F "finite strain, mortar P1, slave = block to
 deck finite_mortar_p1_slave_disc  $F "finite strain, mortar P1, slave = disc arc"  disc_arc block_top mortar P1 0.0 finite
 # ... and on the coarse mesh for tests/finite (test_finite_paper), beside reg_mortar_p1_slave_block
 deck finite_coarse_mortar_p1_slave_block $C "finite strain, coarse, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 finite
-# Plastic layer (issue #14): the block J2, small strain. SY: the elastic
-# run's largest von Mises stress in the layer at full depth is about
-# SY_NOTE; SY is a fraction of it, so the layer yields early in the
-# load (doc/reproduction.md, "The paper's test with a plastic layer").
+# Plastic layer (issue #14): the block J2, small strain. SY = E2/10 is a
+# fifth of the elastic layer's peak pressure (3430 MPa): the layer yields
+# at about a quarter of the indentation (doc/reproduction.md, "The
+# paper's test with a plastic layer"); H = E2/100.
 SY=700.0
 HMOD=70.0
 deck plastic_mortar_p1_slave_block $F "plastic layer, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 plastic
