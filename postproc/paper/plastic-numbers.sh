@@ -3,7 +3,7 @@
 # from raccord runs of input/paper/plastic_*.nml and a CalculiX run of
 # tools/calculix/plastic-ccx.sh on the same mesh.
 #
-#   sh postproc/paper/plastic-numbers.sh RUNS CCXDIR [DECK ...]
+#   sh postproc/paper/plastic-numbers.sh RUNS [CCXDIR [DECK ...]]
 #
 # RUNS    folder of the runs, RUNS/<deck>/<deck>.{history,contact1}.txt
 # CCXDIR  folder of plastic-ccx.sh's outputs (ccx_numbers.txt,
@@ -19,9 +19,10 @@
 # nodes at t = T and the largest |du_y| after unloading over the dent
 # depth (the nodes matched by their order in x: the same mesh nodes).
 set -eu
+[ "$#" -ge 1 ] || { echo "usage: sh postproc/paper/plastic-numbers.sh RUNS [CCXDIR [DECK ...]]" >&2; exit 2; }
 runs=$1
 ccx=${2:-}
-shift 2 || shift $#
+if [ "$#" -ge 2 ]; then shift 2; else shift "$#"; fi
 decks=${*:-plastic_mortar_p1_slave_block plastic_nts_slave_block}
 T=2.0e-5
 have_ccx=0
