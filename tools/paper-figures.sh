@@ -14,10 +14,16 @@
 #                            (tools/calculix/finite-ccx.sh), figure 'finite' only
 #   OUTDIR/finite-numbers.txt  the numbers of the finite-strain section of
 #                            doc/reproduction.md (postproc/paper/finite-numbers.sh)
+#   OUTDIR/calculix-plastic/ the CalculiX run with a *PLASTIC block, loaded and
+#                            unloaded (tools/calculix/plastic-ccx.sh), figure
+#                            'plastic' only
 # FIGURE is any of fig1b fig2a fig2b fig3 fig4a fig4b cycle numbers (default:
 # all of them), or finite: the paper's test with finite strain (neo-Hooke
 # bodies) beside small strain, not drawn by default (its four runs take
-# about 10 times the CPU of the small-strain ones). Builds raccord (Release, in $RACCORD_BUILD, default build/)
+# about 10 times the CPU of the small-strain ones), or plastic: the paper's
+# test with a J2 layer, loaded and unloaded, against CalculiX *PLASTIC, not
+# drawn by default either (two runs of about 2 min, and CalculiX about
+# 40 min on the fine mesh). Builds raccord (Release, in $RACCORD_BUILD, default build/)
 # when needed, runs only the decks whose results are missing or older than
 # their deck, two at a time, then draws. Rerunning does only what is missing;
 # delete OUTDIR/runs/<deck> to force a run. Exit 0 when every figure was
@@ -49,7 +55,8 @@ for f in $figs; do
       slow_fig2a_mortar_p1_slave_block slow_fig3_mortar_p1_mu020" ;;
     finite) d="fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc
       finite_nts_slave_block finite_nts_slave_disc finite_mortar_p1_slave_block finite_mortar_p1_slave_disc" ;;
-    *) echo "paper-figures: unknown figure '$f' (fig1b fig2a fig2b fig3 fig4a fig4b cycle numbers finite)" >&2; exit 2 ;;
+    plastic) d="fig2a_mortar_p1_slave_block plastic_mortar_p1_slave_block plastic_nts_slave_block" ;;
+    *) echo "paper-figures: unknown figure '$f' (fig1b fig2a fig2b fig3 fig4a fig4b cycle numbers finite plastic)" >&2; exit 2 ;;
   esac
   decks="$decks $d"
 done
@@ -110,11 +117,19 @@ case " $figs " in
     fi ;;
 esac
 
+# ... and with a *PLASTIC block, loaded and unloaded, for the plastic figure.
+case " $figs " in
+  *" plastic "*)
+    if [ ! -f "$out/calculix-plastic/ccx_residual.txt" ] || [ "$root/tools/calculix/plastic-ccx.sh" -nt "$out/calculix-plastic/ccx_residual.txt" ]; then
+      sh "$root/tools/calculix/plastic-ccx.sh" "$out/calculix-plastic" || echo "paper-figures: the plastic CalculiX run failed; the plastic figure is drawn without it" >&2
+    fi ;;
+esac
+
 # 4. Figures, each in PNG and PDF.
 for f in $figs; do
   [ "$f" = numbers ] && continue
   for fmt in png pdf; do
-    if ! gnuplot -e "res='$out/runs'; figdir='$out/figures'; ccx='$out/calculix/ccx_pressure.txt'; ccxf='$out/calculix-finite/ccx_pressure.txt'; format='$fmt'" \
+    if ! gnuplot -e "res='$out/runs'; figdir='$out/figures'; ccx='$out/calculix/ccx_pressure.txt'; ccxf='$out/calculix-finite/ccx_pressure.txt'; ccxpl='$out/calculix-plastic'; format='$fmt'" \
         -e "cd '$root/postproc/paper'" "$root/postproc/paper/$f.gp"; then
       echo "paper-figures: $f.$fmt failed" >&2
       status=1

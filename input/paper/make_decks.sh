@@ -21,9 +21,26 @@ CYCLE_A=$(awk "BEGIN { for (k = 0; k <= 40; k++) printf \"%s%.6f\", (k ? \", \" 
 # deck NAME MESH TITLE SLAVE MASTER METHOD MULTIPLIER FRICTION [KINEMATICS]
 # KINEMATICS 'finite' makes both bodies neo-Hooke, finite strain (the
 # decks finite_*: doc/reproduction.md, "The paper's test with finite
-# strain"); left out, both bodies are small strain with Hooke's law.
+# strain"); 'plastic' makes the block J2 elastoplastic, small strain (the
+# decks plastic_*: "The paper's test with a plastic layer"); left out,
+# both bodies are small strain with Hooke's law.
 deck() {
-  if [ "${9:-small}" = finite ]; then
+  BLK=""
+  if [ "${9:-small}" = plastic ]; then
+    # the block only: the disc stays elastic (its von Mises stress is far
+    # below any yield stress of interest here)
+    BLK="
+  material = 'j2', yield_stress = $SY, hardening = $HMOD"
+    FIN=""
+    FINNOTE="
+! Plastic layer: the block is J2 elastoplastic, small strain, yield stress
+! $SY MPa with linear isotropic hardening H = $HMOD MPa (E2/100), mean
+! dilatation (volumetric = 'auto'); the disc stays elastic. The cycle
+! unloads the layer: the disc comes back up to where it started and
+! leaves contact on the way, above the dent it made. CalculiX with
+! *PLASTIC on the same mesh: tools/calculix/plastic-ccx.sh
+! (doc/reproduction.md, \"The paper's test with a plastic layer\")."
+  elif [ "${9:-small}" = finite ]; then
     FIN="
   kinematics = 'finite', material = 'neo_hooke'"
     FINNOTE="
@@ -61,7 +78,7 @@ deck() {
 &body
   name = 'block', elset = 'block'
   young = 7000.0, poisson = 0.3, density = 1.2e-9
-  hypothesis = 'plane_strain', damping = $ALPHA$FIN
+  hypothesis = 'plane_strain', damping = $ALPHA$FIN$BLK
 /
 &amplitude
   name = 'cycle'
@@ -132,3 +149,13 @@ deck finite_mortar_p1_slave_block $F "finite strain, mortar P1, slave = block to
 deck finite_mortar_p1_slave_disc  $F "finite strain, mortar P1, slave = disc arc"  disc_arc block_top mortar P1 0.0 finite
 # ... and on the coarse mesh for tests/finite (test_finite_paper), beside reg_mortar_p1_slave_block
 deck finite_coarse_mortar_p1_slave_block $C "finite strain, coarse, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 finite
+# Plastic layer (issue #14): the block J2, small strain. SY = E2/10 is a
+# fifth of the elastic layer's peak pressure (3430 MPa): the layer yields
+# at about a quarter of the indentation (doc/reproduction.md, "The
+# paper's test with a plastic layer"); H = E2/100.
+SY=700.0
+HMOD=70.0
+deck plastic_mortar_p1_slave_block $F "plastic layer, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 plastic
+deck plastic_nts_slave_block       $F "plastic layer, node-to-segment, slave = block top" block_top disc_arc node_to_segment P1 0.0 plastic
+# ... and on the coarse mesh for tests/plastic (test_plastic_paper)
+deck plastic_coarse_mortar_p1_slave_block $C "plastic layer, coarse, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 plastic

@@ -1,8 +1,10 @@
 # Contact pressure of a CalculiX run of the paper scene, per block-top node,
 # at the last time printed (helper of fig1b-ccx.sh and finite-ccx.sh).
 #
-#   awk -v what='TEXT' -f tools/calculix/ccx-pressure.awk mesh.inp RUN.dat > out
+#   awk -v what='TEXT' [-v at=TIME] -f tools/calculix/ccx-pressure.awk mesh.inp RUN.dat > out
 #
+# at: the total time to extract (as printed in RUN.dat, e.g. 1 for the end
+# of a first step of length 1); default the last time printed.
 # mesh.inp (tools/calculix/msh2inp.awk, CPE4) gives the reference x0 of
 # each node and the block_top node set; RUN.dat holds *NODE PRINT U for
 # NSET=block_top and *CONTACT PRINT CSTR. ccx expands the CPE4 elements into
@@ -24,7 +26,8 @@ file == 2 && /^ *$/ { next }
 file == 2 && NF == 4 && $1 ~ /^[0-9]+$/ {
   if (blk == "u") ux[t, $1 + 0] = $2
   if (blk == "p") { i = int(($1 - nk - 1) / 3) + 1; p[t, i] = $2; seen[t, i] = $1 }
-  last = t; next
+  if (at == "" || t + 0 == at + 0) last = t
+  next
 }
 file == 2 { blk = "" }
 END {
