@@ -63,6 +63,7 @@ module raccord_elastic_block
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
+  public :: element_eigenvalue_bounds, scale_element_density
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = fin_chunk_len
@@ -139,6 +140,9 @@ module raccord_elastic_block
     real(wp), allocatable, private :: cw(:,:,:)      !< (chunk_len, ngp, nchunk) c = w det J0 thickness
     real(wp), allocatable, private :: vol0(:,:)      !< (chunk_len, nchunk) reference volume V_e
     real(wp), allocatable, private :: diag(:,:,:)    !< (chunk_len, 4, nchunk) X3 - X1, X4 - X2
+    !> (chunk_len, nchunk) 1/rho of each element for the kernel's wave-speed
+    !> estimate: 1/rho0, or 1/(s_e rho0) under mass scaling (scale_element_density)
+    real(wp), allocatable, private :: rinv(:,:)
   end type elastic_block_t
 
   !> What the finite-strain kernel reports per chunk each step (the caller
@@ -162,9 +166,11 @@ module raccord_elastic_block
       real(wp), intent(out) :: ke(:,:)
     end subroutine element_stiffness
     !> m(nnode) += lumped nodal masses (thickness included).
-    pure module subroutine add_lumped_mass(blk, density, m)
+    pure module subroutine add_lumped_mass(blk, density, m, scale)
       type(elastic_block_t), intent(in) :: blk
       real(wp), intent(in) :: density
+      !> mass scaling: element e's density times scale(e) (raccord_mass_scaling)
+      real(wp), intent(in), optional :: scale(:)
       real(wp), intent(inout) :: m(:)
     end subroutine add_lumped_mass
     !> f(2, nnode) += consistent nodal forces of a constant force per unit
@@ -176,6 +182,20 @@ module raccord_elastic_block
     end subroutine add_body_force
     !> Upper bound of omega_max^2 of the assembled lumped system (theory
     !> eq. 4.3); stable step dt <= 2/sqrt(w2).
+    !> Per-element bound lambda_max(Ke, Me) of each element (theory eq. 4.3).
+    module subroutine element_eigenvalue_bounds(blk, density, w2)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: density
+      real(wp), intent(out) :: w2(:)
+    end subroutine element_eigenvalue_bounds
+
+    !> Mass scaling of a finite-strain block: element e's wave-speed
+    !> estimate uses the density scale(e)*rho0 (raccord_mass_scaling).
+    module subroutine scale_element_density(blk, scale)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: scale(:)
+    end subroutine scale_element_density
+
     module function max_eigenvalue_bound(blk, density) result(w2)
       type(elastic_block_t), intent(in) :: blk
       real(wp), intent(in) :: density
@@ -536,7 +556,7 @@ contains
     !> finite strain: per-chunk energy, smallest J and (with monitor) omega^2
     type(block_watch_t), intent(inout), optional :: watch
     logical, intent(in), optional :: monitor
-    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rinv, en, jm, w2
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), en, jm, w2
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
     logical :: reset, mon, watched
     nen = blk%nen
@@ -545,10 +565,8 @@ contains
     mon = .false.
     if (present(monitor)) mon = monitor
     watched = present(watch)
-    rinv = 0.0_wp
-    if (blk%density > 0.0_wp) rinv = 1.0_wp/blk%density
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, rinv) &
+    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch) &
     !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
@@ -578,10 +596,10 @@ contains
             call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
           case (KERN_FINITE_Q4)
             call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
-              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_FINITE_Q8)
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
-              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
           end select
           if (watched .and. blk%kinematics == KIN_FINITE) then
             watch%energy(ic) = en

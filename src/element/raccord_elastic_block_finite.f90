@@ -44,7 +44,7 @@ contains
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
     allocate(blk%pg(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
       blk%vol0(chunk_len, blk%nchunk), &
-      blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
+      blk%diag(chunk_len, 4, blk%nchunk), blk%rinv(chunk_len, blk%nchunk), stat=stat, errmsg=msg)
     if (stat /= 0) then
       call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
         ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
@@ -57,6 +57,7 @@ contains
       blk%pg(:, 4, :, :) = 1.0_wp
     end if
     blk%cw = 1.0_wp
+    blk%rinv = 1.0_wp/density
     blk%vol0 = 1.0_wp
     blk%diag = 1.0_wp
     do e = 1, blk%nel
@@ -123,6 +124,16 @@ contains
       end do
     end associate
   end subroutine q4_split
+
+  !> Element e of a finite-strain block gets the density scale(e) rho0 in
+  !> the kernel's wave-speed estimate (the padding lanes keep 1/rho0).
+  module procedure scale_element_density
+    integer :: e
+    if (blk%kinematics /= KIN_FINITE) return
+    do e = 1, blk%nel
+      blk%rinv(mod(e - 1, chunk_len) + 1, (e - 1)/chunk_len + 1) = 1.0_wp/(scale(e)*blk%density)
+    end do
+  end procedure scale_element_density
 
   !> Allocate a block's watch (one entry per chunk).
   module procedure init_watch
