@@ -63,7 +63,7 @@ module raccord_elastic_block
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
-  public :: element_eigenvalue_bounds, scale_element_density
+  public :: element_eigenvalue_bounds, scale_element_density, finite_w2_elements
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = fin_chunk_len
@@ -188,6 +188,14 @@ module raccord_elastic_block
       real(wp), intent(in) :: density
       real(wp), intent(out) :: w2(:)
     end subroutine element_eigenvalue_bounds
+
+    !> Each element's wave-speed estimate omega_e^2 = 4 c^2 / L^2 of the
+    !> finite-strain kernel on the undeformed mesh (finite_w2_at_rest is
+    !> their largest), with the block's current densities.
+    module subroutine finite_w2_elements(blk, w2)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(out) :: w2(:)
+    end subroutine finite_w2_elements
 
     !> Mass scaling of a finite-strain block: element e's wave-speed
     !> estimate uses the density scale(e)*rho0 (raccord_mass_scaling).

@@ -13,8 +13,9 @@
 !> The factors are fixed at the build, from the undeformed mesh. A
 !> finite-strain body keeps its variable step: the kernel's current-length
 !> estimate uses each element's scaled density, so the step follows the
-!> deformation of the scaled system (at rest it is a little below the exact
-!> bound, method brief 5.1, hence at the target).
+!> deformation of the scaled system. Its omega_e^2 there is the larger of
+!> the exact bound and that estimate at rest (which passes the exact bound
+!> on some distorted elements), so the step at rest is the target.
 !>
 !> Everything that reads model%mass -- the predictor, the contact
 !> correction of both matchings with friction (minv_dof, raccord_contact_pair),
@@ -29,7 +30,7 @@ module raccord_mass_scaling
   use raccord_model, only: model_t
   use raccord_material, only: KIN_FINITE
   use raccord_elastic_block, only: add_lumped_mass, element_eigenvalue_bounds, scale_element_density, &
-    finite_w2_at_rest
+    finite_w2_at_rest, finite_w2_elements
   implicit none
   private
 
@@ -50,7 +51,7 @@ contains
   subroutine apply_mass_scaling(scene, model)
     type(scene_t), intent(in) :: scene
     type(model_t), intent(inout) :: model
-    real(wp), allocatable :: w2e(:), sc(:), mb(:), ones(:)
+    real(wp), allocatable :: w2e(:), sc(:), mb(:), ones(:), w2f(:)
     real(wp) :: w2_target, dt_unscaled
     integer :: ib, k, nb
 
@@ -81,9 +82,15 @@ contains
         body%scale_max = 1.0_wp
         do k = 1, size(body%blocks)
           associate (blk => body%blocks(k))
-            if (allocated(w2e)) deallocate(w2e, sc, ones)
-            allocate(w2e(blk%nel), sc(blk%nel), ones(blk%nel))
+            if (allocated(w2e)) deallocate(w2e, sc, ones, w2f)
+            allocate(w2e(blk%nel), sc(blk%nel), ones(blk%nel), w2f(blk%nel))
             call element_eigenvalue_bounds(blk, spec%density, w2e)
+            ! finite strain: the variable step follows the kernel's own
+            ! estimate, which can pass the exact bound on some elements
+            if (spec%kinematics == KIN_FINITE) then
+              call finite_w2_elements(blk, w2f)
+              w2e = max(w2e, w2f)
+            end if
             sc = max(1.0_wp, w2e/w2_target)                         ! (MS-1)
             body%nscaled = body%nscaled + count(sc > 1.0_wp)
             if (blk%nel > 0) body%scale_max = max(body%scale_max, maxval(sc))
