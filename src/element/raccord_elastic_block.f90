@@ -180,8 +180,6 @@ module raccord_elastic_block
       real(wp), intent(in) :: b(2)
       real(wp), intent(inout) :: f(:,:)
     end subroutine add_body_force
-    !> Upper bound of omega_max^2 of the assembled lumped system (theory
-    !> eq. 4.3); stable step dt <= 2/sqrt(w2).
     !> Per-element bound lambda_max(Ke, Me) of each element (theory eq. 4.3).
     module subroutine element_eigenvalue_bounds(blk, density, w2)
       type(elastic_block_t), intent(in) :: blk
@@ -204,6 +202,8 @@ module raccord_elastic_block
       real(wp), intent(in) :: scale(:)
     end subroutine scale_element_density
 
+    !> Upper bound of omega_max^2 of the assembled lumped system (theory
+    !> eq. 4.3); stable step dt <= 2/sqrt(w2).
     module function max_eigenvalue_bound(blk, density) result(w2)
       type(elastic_block_t), intent(in) :: blk
       real(wp), intent(in) :: density
