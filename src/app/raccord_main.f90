@@ -42,6 +42,7 @@ program raccord_main
   use raccord_run_lock, only: take_run_lock, drop_run_lock
   use raccord_threads, only: wait_passively_if_oversubscribed
   use raccord_verify, only: verify_file
+  use raccord_kinetic_check, only: kinetic_check_t, init_kinetic_check, watch_kinetic_energy, report_kinetic_check
   implicit none
 
   interface
@@ -72,6 +73,7 @@ program raccord_main
   character(len=:), allocatable :: stem, why, recorded_scene
   logical :: restart
   integer(i8) :: first_step
+  type(kinetic_check_t) :: kcheck            ! quasi-static check of a mass-scaled run
 
   ! Phase 0: what the user asked for; stop signals ask for a checkpoint.
   call wait_passively_if_oversubscribed()    ! may restart the program (raccord_threads)
@@ -137,6 +139,8 @@ program raccord_main
     if (err%failed()) call finish(err)
   end if
   first_step = state%step
+  call init_kinetic_check(kcheck, model%scaling%active, scene%time%kinetic_ratio_warn, &
+    scene%time%kinetic_check_from, plan%t_end)
   if (model%has_body_force) state%f_ext = model%f_body
   call start_limits()
 
@@ -158,6 +162,7 @@ program raccord_main
     if (err%failed()) call finish(err)
     call update_energy(model, state)         ! energy account at t(n)
     call guard_finite()
+    if (kcheck%active) call watch_kinetic_energy(kcheck, state)
     call write_due_outputs(out, model, state, pairs, err)
     if (err%failed()) call finish(err)
     if (state%step == state%nsteps) exit time_steps
@@ -179,6 +184,7 @@ program raccord_main
   if (err%failed()) call finish(err)
   call delete_file(checkpoint_name(stem))
   call report_summary(model, state, out, pairs, first_step)
+  call report_kinetic_check(kcheck)
   call log_debug('raccord', 'longest step ' // str(control%step_max, 3) // ' s, longest checkpoint write ' // &
     str(control%write_max, 3) // ' s (' // str(control%checkpoints) // ' checkpoints)')
   call drop_run_lock()

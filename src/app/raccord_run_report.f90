@@ -122,6 +122,7 @@ contains
       str(plan%nsteps) // ' steps')
     if (model%has_finite) call log_raw('time    finite strain: the step follows the deforming mesh ' // &
       '(current length and wave speed, at most the dt above); the step count is an estimate')
+    if (model%scaling%active) call report_mass_scaling(scene, model, plan)
     cost = measure_step_cost(model, plan, pairs)
     ! What the run does before its first step (reading, building, this
     ! trial): the processor time of this process so far.
@@ -136,6 +137,37 @@ contains
         str(cost%frame*frames, 3) // ' s)')
     end associate
   end subroutine report_plan
+
+  !> Mass scaling in the plan (raccord_mass_scaling): target, unscaled and
+  !> scaled step and step count, and per body the scaled elements and the
+  !> added mass.
+  subroutine report_mass_scaling(scene, model, plan)
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(time_plan_t), intent(in) :: plan
+    real(wp) :: dt0, added
+    integer(i8) :: n0
+    integer :: ib
+    dt0 = scene%time%safety*2.0_wp/sqrt(model%scaling%w2_unscaled)
+    n0 = max(1_i8, ceiling(plan%t_end/dt0, i8))
+    call log_raw('mass    scaling to dt = ' // str(model%scaling%dt_target, 6) // ': unscaled dt ' // &
+      str(dt0, 6) // ' and ' // str(n0) // ' steps -> dt ' // str(plan%dt, 6) // ' and ' // str(plan%nsteps) // &
+      ' steps (' // str(real(n0, wp)/real(max(1_i8, plan%nsteps), wp), 4) // ' x fewer); kinetic and internal ' // &
+      'energy and the balance are those of the scaled system')
+    do ib = 1, size(model%bodies)
+      associate (b => model%bodies(ib))
+        added = 0.0_wp
+        if (b%mass_unscaled > 0.0_wp) added = (b%mass - b%mass_unscaled)/b%mass_unscaled
+        call log_raw('mass    body ' // b%name // ': ' // str(b%nscaled) // ' of ' // str(size(b%elems)) // &
+          ' elements scaled (density factor up to ' // str(b%scale_max, 4) // '), added mass ' // &
+          str(100.0_wp*added, 4) // ' % of ' // str(b%mass_unscaled, 4) // &
+          trim(merge(' (above added_mass_warn)', '                        ', added > scene%time%added_mass_warn)))
+      end associate
+    end do
+    if (scene%time%kinetic_ratio_warn > 0.0_wp) call log_raw('mass    quasi-static check: a warning when the ' // &
+      'kinetic energy passes ' // str(100.0_wp*scene%time%kinetic_ratio_warn, 4) // ' % of the largest internal ' // &
+      'energy so far, from t = ' // str(scene%time%kinetic_check_from*plan%t_end, 6) // ' on')
+  end subroutine report_mass_scaling
 
   !> The matching and the multiplier space of a pair, as the plan names
   !> them (doc/theory-contact.md, doc/theory-contact-mortar.md).

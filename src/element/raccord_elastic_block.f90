@@ -67,6 +67,7 @@ module raccord_elastic_block
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
   public :: make_plastic, init_plastic, watch_dissipation, reports_energy
   public :: add_nodal_plastic
+  public :: element_eigenvalue_bounds, scale_element_density, finite_w2_elements
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = fin_chunk_len
@@ -146,6 +147,9 @@ module raccord_elastic_block
     real(wp), allocatable, private :: cw(:,:,:)      !< (chunk_len, ngp, nchunk) c = w det J0 thickness
     real(wp), allocatable, private :: vol0(:,:)      !< (chunk_len, nchunk) reference volume V_e
     real(wp), allocatable, private :: diag(:,:,:)    !< (chunk_len, 4, nchunk) X3 - X1, X4 - X2
+    !> (chunk_len, nchunk) 1/rho of each element for the kernel's wave-speed
+    !> estimate: 1/rho0, or 1/(s_e rho0) under mass scaling (scale_element_density)
+    real(wp), allocatable, private :: rinv(:,:)
   end type elastic_block_t
 
   !> What the finite-strain kernel reports per chunk each step (the caller
@@ -181,9 +185,11 @@ module raccord_elastic_block
       real(wp), intent(out) :: ke(:,:)
     end subroutine element_stiffness
     !> m(nnode) += lumped nodal masses (thickness included).
-    pure module subroutine add_lumped_mass(blk, density, m)
+    pure module subroutine add_lumped_mass(blk, density, m, scale)
       type(elastic_block_t), intent(in) :: blk
       real(wp), intent(in) :: density
+      !> mass scaling: element e's density times scale(e) (raccord_mass_scaling)
+      real(wp), intent(in), optional :: scale(:)
       real(wp), intent(inout) :: m(:)
     end subroutine add_lumped_mass
     !> f(2, nnode) += consistent nodal forces of a constant force per unit
@@ -193,6 +199,28 @@ module raccord_elastic_block
       real(wp), intent(in) :: b(2)
       real(wp), intent(inout) :: f(:,:)
     end subroutine add_body_force
+    !> Per-element bound lambda_max(Ke, Me) of each element (theory eq. 4.3).
+    module subroutine element_eigenvalue_bounds(blk, density, w2)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: density
+      real(wp), intent(out) :: w2(:)
+    end subroutine element_eigenvalue_bounds
+
+    !> Each element's wave-speed estimate omega_e^2 = 4 c^2 / L^2 of the
+    !> finite-strain kernel on the undeformed mesh (finite_w2_at_rest is
+    !> their largest), with the block's current densities.
+    module subroutine finite_w2_elements(blk, w2)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(out) :: w2(:)
+    end subroutine finite_w2_elements
+
+    !> Mass scaling of a finite-strain block: element e's wave-speed
+    !> estimate uses the density scale(e)*rho0 (raccord_mass_scaling).
+    module subroutine scale_element_density(blk, scale)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: scale(:)
+    end subroutine scale_element_density
+
     !> Upper bound of omega_max^2 of the assembled lumped system (theory
     !> eq. 4.3); stable step dt <= 2/sqrt(w2).
     module function max_eigenvalue_bound(blk, density) result(w2)
@@ -608,7 +636,7 @@ contains
     !> j2 blocks: the internal variables, updated by the return (required
     !> for a j2 block)
     type(block_plastic_t), intent(inout), optional :: plastic
-    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rinv, en, jm, w2, dis
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), en, jm, w2, dis
     real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len)
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
     logical :: reset, mon, watched, mean
@@ -620,11 +648,9 @@ contains
     watched = present(watch)
     mean = blk%volumetric == VOL_MEAN
     if (blk%material == MAT_J2 .and. .not. present(plastic)) error stop 'add_internal_force: a j2 block needs its plastic state'
-    rinv = 0.0_wp
-    if (blk%density > 0.0_wp) rinv = 1.0_wp/blk%density
     dis = 0.0_wp
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, rinv, plastic, mean) &
+    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, plastic, mean) &
     !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp, act)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
@@ -654,25 +680,25 @@ contains
             call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
           case (KERN_FINITE_Q4)
             call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
-              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_FINITE_Q8)
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
-              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+              blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_J2_SMALL_Q4)
             call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
               ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_J2_SMALL_Q8)
             call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
               ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_J2_FINITE_Q4)
             call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
               ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_J2_FINITE_Q8)
             call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, plastic%h(:, :, :, ic), &
+              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
               ue, fe, sgp, act, en, dis, jm, jel, w2)
           end select
           if (watched .and. reports_energy(blk)) then

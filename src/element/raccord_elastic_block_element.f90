@@ -135,7 +135,11 @@ contains
     real(wp) :: me(max_nen)
     integer :: e
     do e = 1, blk%nel
-      call element_lumped_mass(blk, e, density, me)
+      if (present(scale)) then
+        call element_lumped_mass(blk, e, scale(e)*density, me)
+      else
+        call element_lumped_mass(blk, e, density, me)
+      end if
       m(blk%conn(:, e)) = m(blk%conn(:, e)) + me(1:blk%nen)
     end do
   end procedure add_lumped_mass
@@ -156,18 +160,18 @@ contains
     end do
   end procedure add_body_force
 
-  !> Upper bound of omega_max^2 of the assembled lumped system: the largest
-  !> element eigenvalue lambda_max(Ke, Me) (theory eq. 4.3), from LAPACK
+  !> Each element's eigenvalue lambda_max(Ke, Me) (theory eq. 4.3), whose
+  !> largest bounds omega_max^2 of the assembled lumped system, from LAPACK
   !> dsyev on Me^-1/2 Ke Me^-1/2. Stable step: dt <= 2/sqrt(w2).
   !> Should dsyev fail, the element's Gershgorin bound (also an upper bound)
   !> is used instead.
-  module procedure max_eigenvalue_bound
+  module procedure element_eigenvalue_bounds
     integer, parameter :: nmax = 2*max_nen, lwork = 8*nmax
     real(wp) :: ke(nmax, nmax), me(max_nen), s(nmax), ev(nmax), work(lwork)
     integer :: e, n, i, j, info
-    w2 = 0.0_wp
     n = 2*blk%nen
     do e = 1, blk%nel
+      w2(e) = 0.0_wp
       call element_stiffness(blk, e, ke(1:n, 1:n))
       call element_lumped_mass(blk, e, density, me)
       do i = 1, blk%nen
@@ -180,15 +184,25 @@ contains
       end do
       call dsyev('N', 'U', n, ke, nmax, ev, work, lwork, info)
       if (info == 0) then
-        w2 = max(w2, ev(n))
+        w2(e) = ev(n)
       else
         ! dsyev destroyed the matrix: rebuild it for the Gershgorin bound
         call element_stiffness(blk, e, ke(1:n, 1:n))
         do i = 1, n
-          w2 = max(w2, sum(abs(ke(i, 1:n))*s(1:n))*s(i))
+          w2(e) = max(w2(e), sum(abs(ke(i, 1:n))*s(1:n))*s(i))
         end do
       end if
     end do
+  end procedure element_eigenvalue_bounds
+
+  !> Upper bound of omega_max^2 of the assembled lumped system: the largest
+  !> of the element bounds (element_eigenvalue_bounds).
+  module procedure max_eigenvalue_bound
+    real(wp), allocatable :: w2e(:)
+    allocate(w2e(blk%nel))
+    call element_eigenvalue_bounds(blk, density, w2e)
+    w2 = 0.0_wp
+    if (blk%nel > 0) w2 = maxval(w2e)
   end procedure max_eigenvalue_bound
 
   !> The nodal stress contributions of element e (add_nodal_stress).

@@ -52,7 +52,7 @@ contains
     real(wp) :: x1(2), x2(2), x3(2), x4(2)
     allocate(blk%pg(chunk_len, 4, blk%ngp, blk%nchunk), blk%cw(chunk_len, blk%ngp, blk%nchunk), &
       blk%vol0(chunk_len, blk%nchunk), &
-      blk%diag(chunk_len, 4, blk%nchunk), stat=stat, errmsg=msg)
+      blk%diag(chunk_len, 4, blk%nchunk), blk%rinv(chunk_len, blk%nchunk), stat=stat, errmsg=msg)
     if (stat /= 0) then
       call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
         ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
@@ -65,6 +65,7 @@ contains
       blk%pg(:, 4, :, :) = 1.0_wp
     end if
     blk%cw = 1.0_wp
+    blk%rinv = 1.0_wp/blk%density
     blk%vol0 = 1.0_wp
     blk%diag = 1.0_wp
     do e = 1, blk%nel
@@ -131,6 +132,45 @@ contains
       end do
     end associate
   end subroutine q4_split
+
+  !> Element e of a finite-strain block gets the density scale(e) rho0 in
+  !> the kernel's wave-speed estimate (the padding lanes keep 1/rho0).
+  module procedure scale_element_density
+    integer :: e
+    if (blk%kinematics /= KIN_FINITE) return
+    do e = 1, blk%nel
+      blk%rinv(mod(e - 1, chunk_len) + 1, (e - 1)/chunk_len + 1) = 1.0_wp/(scale(e)*blk%density)
+    end do
+  end procedure scale_element_density
+
+  !> The kernel's estimate at u = 0 for one element at a time: the chunk's
+  !> kernel with 1/rho zero on every lane but one returns that lane's
+  !> omega_e^2 (32 chunk evaluations per chunk, at the build only).
+  module procedure finite_w2_elements
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), rl(chunk_len), en, jm, w2c
+    integer :: ic, e0, nc, l, jel, mat
+    w2 = 0.0_wp
+    if (blk%kinematics /= KIN_FINITE) return
+    mat = merge(MAT_NEO_HOOKE, blk%material, blk%material == MAT_J2)
+    ue = 0.0_wp
+    do ic = 1, blk%nchunk
+      e0 = (ic - 1)*chunk_len
+      nc = min(chunk_len, blk%nel - e0)
+      do l = 1, nc
+        rl = 0.0_wp
+        rl(l) = blk%rinv(l, ic)
+        ! (a j2 block at rest has the neo-Hooke estimate: K + 4G/3 in both)
+        if (blk%etype == ELEM_Q4) then
+          call kernel_finite_q4(nc, mat, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
+            blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rl, blk%thickness, .true., ue, fe, en, jm, jel, w2c)
+        else
+          call kernel_finite_q8(nc, mat, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
+            blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rl, blk%thickness, .true., ue, fe, en, jm, jel, w2c)
+        end if
+        w2(e0 + l) = w2c
+      end do
+    end do
+  end procedure finite_w2_elements
 
   !> Allocate a block's watch (one entry per chunk).
   module procedure init_watch

@@ -82,12 +82,11 @@ contains
   !> Gauss-point stresses extrapolated to its nodes (theory eq. 7.1).
   module procedure add_group_j2_stress
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), sgp(chunk_len, 4, max_gp)
-    real(wp) :: hist(chunk_len, nhist, max_gp), act(chunk_len), en, dis, jm, w2, rinv
+    real(wp) :: hist(chunk_len, nhist, max_gp), act(chunk_len), en, dis, jm, w2
     integer :: ic, e0, nc, i, a, node, jel, g, ngp
     logical :: mean
     mean = blk%volumetric == VOL_MEAN
     ngp = blk%ngp
-    rinv = 1.0_wp/blk%density
     do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
       e0 = (ic - 1)*chunk_len
       nc = min(chunk_len, blk%nel - e0)
@@ -101,19 +100,19 @@ contains
       select case (blk%kernel)
       case (KERN_J2_SMALL_Q4)
         call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
           ue, fe, sgp, act, en, dis, jm, jel, w2)
       case (KERN_J2_SMALL_Q8)
         call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
           ue, fe, sgp, act, en, dis, jm, jel, w2)
       case (KERN_J2_FINITE_Q4)
         call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
           ue, fe, sgp, act, en, dis, jm, jel, w2)
       case (KERN_J2_FINITE_Q8)
         call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, .false., hist, &
+          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
           ue, fe, sgp, act, en, dis, jm, jel, w2)
       end select
       ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)

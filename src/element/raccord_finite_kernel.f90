@@ -51,7 +51,7 @@ contains
   !> q4_split), with which F = F0 + q (x) grad_X h at each point and
   !> f_a = Pbar b_a + gamma_a r, Pbar = sum_g c P, r = sum_g c P grad_X h; cw(:, g) = c = w det J0 t0; vol0 = V_e; diag(:, 1:4) = reference
   !> corner diagonals X3 - X1, X4 - X2 (x, y each); lfac = 1 (Q4) or 0.3 (Q8);
-  !> rinv = 1/rho0; thickness t0 turns the element volume into its area.
+  !> rinv = 1/rho0 per element (mass scaling: 1/(s_e rho0)); thickness t0 turns the element volume into its area.
   !> The body is raccord_finite_kernel_body.inc, one copy per element type.
   !>
   !> Q4: 4 nodes, 2x2 Gauss, L_e = A / longest diagonal.

@@ -23,7 +23,20 @@ module raccord_model
     real(wp) :: density = 0.0_wp
     real(wp) :: mass = 0.0_wp                          !< total mass (with thickness)
     real(wp) :: w2_bound = 0.0_wp                      !< element bound on omega_max^2
+    ! Mass scaling (raccord_mass_scaling): mass is the scaled total.
+    real(wp) :: mass_unscaled = 0.0_wp                 !< total mass at the deck's density
+    integer :: nscaled = 0                             !< elements whose density was scaled
+    real(wp) :: scale_max = 1.0_wp                     !< largest density factor s_e
   end type body_t
+
+  !> Mass scaling of the model (raccord_mass_scaling): the target, and the
+  !> unscaled step it replaced.
+  type, public :: mass_scaling_t
+    logical :: active = .false.
+    real(wp) :: dt_target = 0.0_wp                     !< the step the run is to take
+    real(wp) :: w2_target = 0.0_wp                     !< omega^2 of an element scaled to it
+    real(wp) :: w2_unscaled = 0.0_wp                   !< model w2_bound before scaling
+  end type mass_scaling_t
 
   !> A support: components of a node set held at value*amplitude(t)
   !> (value 0 for a fixed condition). Its constrained degrees of freedom
@@ -72,6 +85,7 @@ module raccord_model
     real(wp), allocatable :: alpha(:)                  !< (nnode) mass-proportional damping [1/time], per body
     real(wp) :: w2_bound = 0.0_wp                      !< max over bodies of the element bound
     real(wp) :: w2_small = 0.0_wp                      !< the same over the small-strain bodies only
+    type(mass_scaling_t) :: scaling                    !< mass scaling, when the scene asks for it
     !> Threads of the per-node loops (1: serial); set_model_threads sets it
     !> with the blocks' count.
     integer :: nthreads = 1

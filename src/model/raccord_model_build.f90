@@ -14,6 +14,7 @@ module raccord_model_build
   use raccord_plasticity, only: j2_t
   use raccord_edge_load, only: add_edge_traction
   use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t, requested_threads, set_model_threads
+  use raccord_mass_scaling, only: apply_mass_scaling
   implicit none
   private
 
@@ -199,6 +200,8 @@ contains
 
     nfree = count(elem_body == 0)
     if (nfree > 0) call log_warn('build_model', str(nfree) // ' mesh elements belong to no &body and are ignored')
+    ! &time mass_scaling_dt / mass_scaling_factor: scaled masses and bounds
+    call apply_mass_scaling(scene, model)
     allocate(model%minv(mesh%nnode), source=0.0_wp)
     where (model%mass > 0.0_wp) model%minv = 1.0_wp/model%mass
     ! Nodes of finite-strain and j2 bodies: their stored energy replaces

@@ -17,7 +17,8 @@ module raccord_deck_run
   !> Keys of each group, in the order the documentation and the echo use.
   character(len=*), parameter :: RUN_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'wall_clock', &
     'checkpoint_every']
-  character(len=*), parameter :: TIME_KEYS(*) = [character(len=16) :: 't_end', 'dt', 'safety', 'damping']
+  character(len=*), parameter :: TIME_KEYS(*) = [character(len=19) :: 't_end', 'dt', 'safety', 'damping', &
+    'mass_scaling_dt', 'mass_scaling_factor', 'added_mass_warn', 'kinetic_ratio_warn', 'kinetic_check_from']
   character(len=*), parameter :: OUTPUT_KEYS(*) = [character(len=16) :: 'frames', 'history_every', &
     'progress_seconds', 'stress']
 
@@ -76,14 +77,18 @@ contains
     end if
   end subroutine read_run
 
-  !> &time t_end, dt, safety, damping.
+  !> &time t_end, dt, safety, damping and the mass-scaling keys
+  !> mass_scaling_dt, mass_scaling_factor, added_mass_warn,
+  !> kinetic_ratio_warn, kinetic_check_from.
   subroutine read_time(deck, blk, spec, err)
     character(len=*), intent(in) :: deck
     type(deck_block_t), intent(in) :: blk
     type(time_spec_t), intent(out) :: spec
     type(error_t), intent(inout) :: err
     real(wp) :: t_end, dt, safety, damping
-    namelist /time/ t_end, dt, safety, damping
+    real(wp) :: mass_scaling_dt, mass_scaling_factor, added_mass_warn, kinetic_ratio_warn, kinetic_check_from
+    namelist /time/ t_end, dt, safety, damping, mass_scaling_dt, mass_scaling_factor, added_mass_warn, &
+      kinetic_ratio_warn, kinetic_check_from
     character(len=:), allocatable :: record
     character(len=256) :: msg
     integer :: k, ios
@@ -92,6 +97,11 @@ contains
     dt = spec%dt
     safety = spec%safety
     damping = spec%damping
+    mass_scaling_dt = spec%mass_scaling_dt
+    mass_scaling_factor = spec%mass_scaling_factor
+    added_mass_warn = spec%added_mass_warn
+    kinetic_ratio_warn = spec%kinetic_ratio_warn
+    kinetic_check_from = spec%kinetic_check_from
     call check_keys(deck, blk, TIME_KEYS, '', err)
     if (err%failed()) return
     do k = 1, size(blk%keys)
@@ -103,8 +113,10 @@ contains
         return
       end if
     end do
-    call check_finite(deck, blk, '', [character(len=8) :: 't_end', 'dt', 'safety', 'damping'], &
-      [t_end, dt, safety, damping], err)
+    call check_finite(deck, blk, '', [character(len=19) :: 't_end', 'dt', 'safety', 'damping', 'mass_scaling_dt', &
+      'mass_scaling_factor', 'added_mass_warn', 'kinetic_ratio_warn', 'kinetic_check_from'], &
+      [t_end, dt, safety, damping, mass_scaling_dt, mass_scaling_factor, added_mass_warn, kinetic_ratio_warn, &
+      kinetic_check_from], err)
     if (err%failed()) return
 
     if (t_end == UNSET) then
@@ -120,8 +132,34 @@ contains
     else if (.not. (damping >= 0.0_wp)) then
       call bad_value(deck, blk, '', 'damping', 'the damping must be >= 0', &
         'give a mass-proportional damping alpha in 1/time, or 0 for none', err)
+    else if (.not. (mass_scaling_dt >= 0.0_wp)) then
+      call bad_value(deck, blk, '', 'mass_scaling_dt', 'the target step must be >= 0', &
+        'give the step the run should take, or 0 for no mass scaling', err)
+    else if (.not. (mass_scaling_factor == 0.0_wp .or. mass_scaling_factor >= 1.0_wp)) then
+      call bad_value(deck, blk, '', 'mass_scaling_factor', 'the target factor must be >= 1 (or 0: none)', &
+        'give the step the run should take as a multiple of the unscaled step, e.g. 5', err)
+    else if (mass_scaling_dt > 0.0_wp .and. mass_scaling_factor > 0.0_wp) then
+      call bad_value(deck, blk, '', 'mass_scaling_factor', 'mass_scaling_dt and mass_scaling_factor are both given', &
+        'give one of them: the target step itself, or as a factor of the unscaled step', err)
+    else if (dt > 0.0_wp .and. (mass_scaling_dt > 0.0_wp .or. mass_scaling_factor > 0.0_wp)) then
+      call bad_value(deck, blk, '', 'dt', 'a fixed dt and mass scaling are both given', &
+        'leave dt out (0): with mass scaling the step is the target, mass_scaling_dt', err)
+    else if (.not. (added_mass_warn >= 0.0_wp)) then
+      call bad_value(deck, blk, '', 'added_mass_warn', 'the added-mass threshold must be >= 0', &
+        'give a fraction of the body mass, e.g. 0.05 for 5 %', err)
+    else if (.not. (kinetic_ratio_warn >= 0.0_wp)) then
+      call bad_value(deck, blk, '', 'kinetic_ratio_warn', 'the kinetic-energy threshold must be >= 0', &
+        'give a fraction of the internal energy, e.g. 0.05, or 0 for no check', err)
+    else if (.not. (kinetic_check_from >= 0.0_wp .and. kinetic_check_from <= 1.0_wp)) then
+      call bad_value(deck, blk, '', 'kinetic_check_from', 'the start of the kinetic-energy check must lie in [0, 1]', &
+        'give a fraction of t_end, e.g. 0.2 to skip the start-up', err)
     end if
     if (err%failed()) return
+    spec%mass_scaling_dt = mass_scaling_dt
+    spec%mass_scaling_factor = mass_scaling_factor
+    spec%added_mass_warn = added_mass_warn
+    spec%kinetic_ratio_warn = kinetic_ratio_warn
+    spec%kinetic_check_from = kinetic_check_from
     spec%t_end = t_end
     spec%dt = dt
     spec%safety = safety

@@ -132,6 +132,13 @@ contains
     call put(unit, '  dt = ' // real_text(scene%time%dt), ios, msg)
     call put(unit, '  safety = ' // real_text(scene%time%safety), ios, msg)
     call put(unit, '  damping = ' // real_text(scene%time%damping), ios, msg)
+    if (scene%time%mass_scaling_dt > 0.0_wp .or. scene%time%mass_scaling_factor > 0.0_wp) then
+      call put(unit, '  mass_scaling_dt = ' // real_text(scene%time%mass_scaling_dt), ios, msg)
+      call put(unit, '  mass_scaling_factor = ' // real_text(scene%time%mass_scaling_factor), ios, msg)
+      call put(unit, '  added_mass_warn = ' // real_text(scene%time%added_mass_warn), ios, msg)
+      call put(unit, '  kinetic_ratio_warn = ' // real_text(scene%time%kinetic_ratio_warn), ios, msg)
+      call put(unit, '  kinetic_check_from = ' // real_text(scene%time%kinetic_check_from), ios, msg)
+    end if
     call put(unit, '/', ios, msg)
 
     call put(unit, '&output', ios, msg)

@@ -79,6 +79,18 @@ module raccord_scene
     real(wp) :: dt = 0.0_wp                         !< fixed step [time]; 0 = safety*stable step
     real(wp) :: safety = 0.9_wp                     !< fraction of the stable step used
     real(wp) :: damping = 0.0_wp                    !< default mass-proportional alpha of the bodies [1/time]
+    !> Mass scaling (raccord_mass_scaling, doc/scene-reference.md): the step
+    !> the run should take [time] (0: none), or that step as a factor of the
+    !> unscaled one (0: none); elements whose own safety * stable step is
+    !> below it get their density scaled up to reach it.
+    real(wp) :: mass_scaling_dt = 0.0_wp
+    real(wp) :: mass_scaling_factor = 0.0_wp
+    real(wp) :: added_mass_warn = 0.05_wp           !< warn when a body's added mass passes this fraction
+    !> quasi-static check of a mass-scaled run: warn when the kinetic energy
+    !> passes this fraction of the largest internal energy so far (0: off),
+    !> from the time kinetic_check_from * t_end on
+    real(wp) :: kinetic_ratio_warn = 0.05_wp
+    real(wp) :: kinetic_check_from = 0.5_wp
   end type time_spec_t
 
   !> &output: what is written, and how often.

@@ -4,7 +4,7 @@
 #
 #   sh restart_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
 #
-# CASE        signal, wall_clock, kill, refuse
+# CASE        signal, wall_clock, kill, refuse, mass_scaling
 # RACCORD     the raccord executable
 # SOURCE_DIR  the repository (the sliding mesh of input/verification/sliding)
 # WORK_DIR    a folder of this case alone, emptied first
@@ -56,7 +56,7 @@ cd "$work" || exit 1
 export GFORTRAN_ERROR_BACKTRACE=0
 unset RACCORD_WALLCLOCK_SECONDS
 
-# deck FOLDER [EXTRA_RUN_KEYS [FRICTION [METHOD]]]: FOLDER/slide.nml
+# deck FOLDER [EXTRA_RUN_KEYS [FRICTION [METHOD [EXTRA_TIME_KEYS]]]]: FOLDER/slide.nml
 deck() {
   mkdir -p "$1"
   cat > "$1/slide.nml" <<EOF
@@ -89,7 +89,7 @@ deck() {
   set = 'slider_right', type = 'traction', value = 12.0, 0.0, amplitude = 'pull'
 /
 &time
-  t_end = 1.3e-5, damping = 1.2e7
+  t_end = 1.3e-5, damping = 1.2e7${5:+, $5}
 /
 &output
   frames = 13, history_every = 7
@@ -342,6 +342,28 @@ refuse)
   run base -o base base/slide.nml
   check "fresh run: exit 0, stale checkpoint deleted" test "$code" -eq 0 -a ! -e base/slide.checkpoint.h5
   check "fresh run: the log says so" has base/slide.log "of an earlier run is deleted"
+  ;;
+mass_scaling)
+  # A mass-scaled run (&time mass_scaling_factor = 3, issue #19): the scaled
+  # masses are rebuilt from the scene on restart; stopped by SIGUSR1 in
+  # mid-run and restarted, it equals the uninterrupted scaled run exactly.
+  rm -rf cont
+  deck cont '' 0.3 mortar 'mass_scaling_factor = 3'
+  run cont -o cont cont/slide.nml
+  [ "$code" -eq 0 ] || { fail "mass-scaled reference run exit $code"; cat cont/run.out; finish; }
+  check "the reference run is mass scaled (plan: scaled elements and added mass)" has cont/slide.log "elements scaled"
+  check "the reference run takes 3 x fewer steps (677 for 2029)" has cont/slide.log "and 677 steps"
+  deck ms '' 0.3 mortar 'mass_scaling_factor = 3'
+  start_frozen ms '[ "$(last_row_step ms/slide.history.txt.part 2>/dev/null || echo 0)" -ge 200 ]' -o ms ms/slide.nml
+  kill -USR1 "$pid"
+  kill -CONT "$pid"
+  wait "$pid"
+  code=$?
+  check "mass scaled, SIGUSR1: exit 5" test "$code" -eq 5
+  stopped ms
+  run ms --restart ms/slide.checkpoint.h5
+  check "mass scaled, restart: exit 0" test "$code" -eq 0
+  same_results ms
   ;;
 *)
   echo "unknown case $case_name"

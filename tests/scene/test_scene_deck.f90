@@ -74,6 +74,9 @@ program test_scene_deck
       new_test('bad: safety above one', bad_safety_above_one), &
       new_test('bad: safety zero', bad_safety_zero), &
       new_test('bad: damping negative', bad_damping_negative), &
+      new_test('bad: mass scaling factor below one', bad_mass_scaling_factor), &
+      new_test('bad: mass scaling dt and factor both', bad_mass_scaling_both), &
+      new_test('bad: mass scaling with a fixed dt', bad_mass_scaling_fixed_dt), &
       new_test('bad: frames negative', bad_frames_negative), &
       new_test('bad: bc set missing', bad_bc_set_missing), &
       new_test('bad: bc type missing', bad_bc_type_missing), &
@@ -257,6 +260,10 @@ contains
     end do
     call check(failure, b%time%t_end == a%time%t_end .and. b%time%dt == a%time%dt .and. &
       b%time%safety == a%time%safety .and. b%time%damping == a%time%damping, '&time differs')
+    call check(failure, b%time%mass_scaling_dt == a%time%mass_scaling_dt .and. &
+      b%time%mass_scaling_factor == a%time%mass_scaling_factor .and. &
+      b%time%added_mass_warn == a%time%added_mass_warn .and. b%time%kinetic_ratio_warn == a%time%kinetic_ratio_warn &
+      .and. b%time%kinetic_check_from == a%time%kinetic_check_from, '&time mass scaling differs')
     call check(failure, b%output%frames == a%output%frames .and. b%output%history_every == a%output%history_every &
       .and. b%output%progress_seconds == a%output%progress_seconds .and. (b%output%stress .eqv. a%output%stress), &
       '&output differs')
@@ -983,6 +990,33 @@ contains
       "&time t_end = 1.0, safety = 1.5 /", &
       3, [character(len=FRAG_LEN) :: "&time", "'safety'", "1.5", "(0, 1]"])
   end subroutine bad_safety_above_one
+
+  subroutine bad_mass_scaling_factor(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'mass_scaling_factor', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0, mass_scaling_factor = 0.5 /", &
+      3, [character(len=FRAG_LEN) :: "&time", "'mass_scaling_factor'", "0.5", ">= 1"])
+  end subroutine bad_mass_scaling_factor
+
+  subroutine bad_mass_scaling_both(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'mass_scaling_both', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0, mass_scaling_factor = 4, mass_scaling_dt = 1e-3 /", &
+      3, [character(len=FRAG_LEN) :: "&time", "both given", "give one of them"])
+  end subroutine bad_mass_scaling_both
+
+  subroutine bad_mass_scaling_fixed_dt(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'mass_scaling_fixed_dt', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0, dt = 1e-4, mass_scaling_dt = 1e-3 /", &
+      3, [character(len=FRAG_LEN) :: "&time", "'dt'", "mass scaling", "leave dt out"])
+  end subroutine bad_mass_scaling_fixed_dt
 
   subroutine bad_safety_zero(failure)
     type(failure_t), allocatable, intent(out) :: failure
