@@ -92,6 +92,8 @@ contains
         if (err%failed()) return
         call build_contact_surface(mesh, spec%master, where // ' master', pair%master, err)
         if (err%failed()) return
+        pair%slave%axisymmetric = model%axisymmetric
+        pair%master%axisymmetric = model%axisymmetric
         if (spec%method == METHOD_MORTAR) then
           call init_mortar(pair%slave, pair%master, spec%multiplier, where, pair%mortar, err)
           if (err%failed()) return

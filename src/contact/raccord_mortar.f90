@@ -23,7 +23,7 @@
 !> normal ray meets the master segment. Candidates come from the bins of
 !> raccord_contact_search, so the cost is linear in the surface nodes.
 module raccord_mortar
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, pi
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_scene, only: MULT_P1, MULT_P0, MULT_DUAL
   use raccord_shape, only: shape_line
@@ -422,6 +422,8 @@ contains
         ts = matmul(xs(:, 1:nen), dns(1:nen))
         n = matmul(nn(:, 1:nen), ns(1:nen))
         dg = norm2(ts)*wgt                       ! dGamma = |dx_s/dxi| dxi
+        ! axisymmetric: dGamma = 2 pi r |dx_s/dxi| dxi (method brief 9.4)
+        if (slave%axisymmetric) dg = dg*(2.0_wp*pi*ps(1))
         eta = intersect_ray(nenm, xm, ps, n)
         call shape_line(nenm, eta, nm, dnm)
         call multiplier_basis(nen, w%multiplier, xi, psi)

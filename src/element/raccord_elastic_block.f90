@@ -57,12 +57,14 @@ module raccord_elastic_block
   use raccord_material, only: moduli_t, make_moduli, KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, &
     VOL_FULL, material_name
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
+  use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
   implicit none
   private
 
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
+  public :: make_axisymmetric
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = fin_chunk_len
@@ -77,6 +79,8 @@ module raccord_elastic_block
   !> The kernel of a block, chosen once (make_finite, init_elastic_block):
   !> small-strain Q4 split, small-strain Q8, finite strain (Q4 or Q8).
   integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE_Q4 = 3, KERN_FINITE_Q8 = 4
+  !> small-strain axisymmetric Q4 and Q8 (make_axisymmetric, raccord_axi_kernel)
+  integer, parameter :: KERN_AXI_Q4 = 21, KERN_AXI_Q8 = 22
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
   !> M11, M12, M22 (eq. 6.5).
@@ -139,6 +143,12 @@ module raccord_elastic_block
     real(wp), allocatable, private :: cw(:,:,:)      !< (chunk_len, ngp, nchunk) c = w det J0 thickness
     real(wp), allocatable, private :: vol0(:,:)      !< (chunk_len, nchunk) reference volume V_e
     real(wp), allocatable, private :: diag(:,:,:)    !< (chunk_len, 4, nchunk) X3 - X1, X4 - X2
+    ! Axisymmetric only (Q4 and Q8; make_axisymmetric): h and c above hold
+    ! sqrt(c) J^-1 and c = w detJ 2 pi r_g for Q4 too
+    !> x is the radius, y the axis; integrals over 2 pi r (doc/theory-axisymmetric.md)
+    logical :: axisymmetric = .false.
+    real(wp), allocatable, private :: hoop(:,:,:)    !< (chunk_len, ngp, nchunk) sqrt(c)/r_g
+    logical, allocatable, private :: on_axis(:,:)    !< (nen, nel) node at r = 0 (u_r held at 0)
   end type elastic_block_t
 
   !> What the finite-strain kernel reports per chunk each step (the caller
@@ -229,6 +239,39 @@ module raccord_elastic_block
       real(wp), intent(in) :: density
       type(error_t), intent(inout) :: err
     end subroutine make_finite
+    !> Turn a small-strain block set up by init_elastic_block (thickness 1,
+    !> plane strain) into an axisymmetric block: x is the radius r >= 0, y
+    !> the axis; every integral carries 2 pi r (doc/theory-axisymmetric.md).
+    !> Nodes at r = 0 are the caller's to hold radially (raccord_model_build).
+    !> Fails (EXIT_INPUT) on r < 0, naming the element.
+    module subroutine make_axisymmetric(blk, x, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine make_axisymmetric
+    !> ke += the hoop terms of the axisymmetric element stiffness
+    !> (B rows tt with rr, zz, tt), dof order as element_stiffness.
+    pure module subroutine axi_hoop_stiffness(blk, e, ke)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(inout) :: ke(:,:)
+    end subroutine axi_hoop_stiffness
+    !> Zero the rows and columns of the radial dofs of element e's nodes on
+    !> the axis (held there, they take no part in the element eigenvalue).
+    pure module subroutine axi_drop_axis_dofs(blk, e, ke)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(inout) :: ke(:,:)
+    end subroutine axi_drop_axis_dofs
+    !> The nodal stress (strain = .false.) or strain contributions of
+    !> axisymmetric element e: (rr, zz, rz, tt).
+    pure module subroutine add_element_axi(blk, e, u, strain, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(in) :: u(:,:)
+      logical, intent(in) :: strain
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_element_axi
     !> Allocate a block's watch (one entry per chunk).
     module subroutine init_watch(blk, watch)
       type(elastic_block_t), intent(in) :: blk
@@ -582,6 +625,10 @@ contains
           case (KERN_FINITE_Q8)
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
+          case (KERN_AXI_Q4)
+            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
+          case (KERN_AXI_Q8)
+            call kernel_axi_q8(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           end select
           if (watched .and. blk%kinematics == KIN_FINITE) then
             watch%energy(ic) = en
@@ -729,11 +776,13 @@ contains
     logical, intent(in), optional :: strain
     integer :: col, k, e, e0, e1, what
     integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4
+    integer, parameter :: axi_stress = 5, axi_strain = 6
     what = small_stress
     if (present(strain)) then
       if (strain) what = small_strain
     end if
     if (blk%kinematics == KIN_FINITE) what = what + 2
+    if (blk%axisymmetric) what = what + 4
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, s, wsum, what) &
     !$omp   private(col, k, e, e0, e1)
@@ -757,6 +806,10 @@ contains
         case (finite_strain)
           do e = e0, e1
             call add_element_finite(blk, e, u, .true., s, wsum)
+          end do
+        case (axi_stress, axi_strain)
+          do e = e0, e1
+            call add_element_axi(blk, e, u, what == axi_strain, s, wsum)
           end do
         end select
       end do groups

@@ -83,6 +83,9 @@ module raccord_model
     !> Some body is finite strain: its stored energy enters the energy
     !> account and the stable step follows its deformation (variable step).
     logical :: has_finite = .false.
+    !> The bodies are axisymmetric (&body hypothesis = 'axisymmetric'): x is
+    !> the radius, forces are totals over 2 pi (doc/theory-axisymmetric.md)
+    logical :: axisymmetric = .false.
     integer, allocatable :: finite_nodes(:)            !< nodes of finite-strain bodies
   end type model_t
 

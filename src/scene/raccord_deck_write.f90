@@ -59,7 +59,9 @@ contains
           call put(unit, '  young = ' // real_text(b%young), ios, msg)
           call put(unit, '  poisson = ' // real_text(b%poisson), ios, msg)
           call put(unit, '  density = ' // real_text(b%density), ios, msg)
-          if (b%plane_stress) then
+          if (b%axisymmetric) then
+            call put_text(unit, 'hypothesis', 'axisymmetric', ios, msg)
+          else if (b%plane_stress) then
             call put_text(unit, 'hypothesis', 'plane_stress', ios, msg)
           else
             call put_text(unit, 'hypothesis', 'plane_strain', ios, msg)
@@ -67,7 +69,7 @@ contains
           call put_text(unit, 'kinematics', kinematics_name(b%kinematics), ios, msg)
           call put_text(unit, 'material', material_name(b%material), ios, msg)
           if (b%kinematics == KIN_FINITE) call put_text(unit, 'volumetric', volumetric_name(b%volumetric), ios, msg)
-          call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
+          if (.not. b%axisymmetric) call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
           call put(unit, '  velocity = ' // reals_text(b%velocity), ios, msg)
           call put(unit, '  body_force = ' // reals_text(b%body_force), ios, msg)
           call put(unit, '  damping = ' // real_text(b%damping), ios, msg)
