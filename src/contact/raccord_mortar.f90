@@ -564,7 +564,8 @@ contains
 
   !> Slave nodal normals: the normalised mean of the outward unit normals of
   !> the segments meeting at the node, each taken at the node (for 3-node
-  !> segments the quadratic's own tangent there).
+  !> segments the quadratic's own tangent there); along the axis at an
+  !> axisymmetric surface's axis node.
   subroutine slave_normals(slave, x, w)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: x(:,:)
@@ -587,6 +588,14 @@ contains
       end do
     end do
     do c = 1, slave%nnode
+      ! A surface of revolution meets the axis at a right angle: at a node
+      ! on the axis (r = 0) the normal is along the axis (its one segment
+      ! tilts as the surface deforms; a tilted normal there would project
+      ! a master corner on the axis off the slave end and leave the axis
+      ! node without its multiplier).
+      if (slave%axisymmetric) then
+        if (x(1, slave%node(c)) == 0.0_wp) w%nrm(1, c) = 0.0_wp
+      end if
       w%nrm(:, c) = w%nrm(:, c)/max(norm2(w%nrm(:, c)), tiny(1.0_wp))
     end do
   end subroutine slave_normals

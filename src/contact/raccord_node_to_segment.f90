@@ -173,6 +173,10 @@ contains
     end do
     do q = 1, master%nnode
       associate (v => nodal_normal(:, master%node(q)))
+        ! along the axis at an axisymmetric surface's axis node (raccord_mortar, slave_normals)
+        if (master%axisymmetric) then
+          if (x(1, master%node(q)) == 0.0_wp) v(1) = 0.0_wp
+        end if
         v = v/max(norm2(v), tiny(1.0_wp))
       end associate
     end do
