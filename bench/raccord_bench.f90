@@ -1,12 +1,16 @@
 !> raccord_bench: timings of the explicit time step on in-memory structured
 !> meshes (doc/performance.md).
 !>
-!>   raccord_bench [--type q4|q8|all] [--kinematics small|finite|all] [--threads T]
+!>   raccord_bench [--type q4|q8|all] [--kinematics small|finite|all|axi|small-axi] [--threads T]
 !>                 [--min-time SECONDS] [--repeat N] [NEL ...]
 !>
 !> --kinematics finite times the finite-strain neo-Hooke kernel (type column
 !> Q4f / Q8f; Q4 with mean dilatation, as a scene gets by default); all
 !> times each small-strain case and then its finite-strain twin, back to back.
+!> --kinematics axi times the small-strain axisymmetric kernel (type Q4a /
+!> Q8a, raccord_axi_kernel) on the same mesh read as an r-z section (x = r,
+!> the clamped side on the axis); small-axi times each plane-strain case and
+!> then its axisymmetric twin, back to back.
 !>
 !> NEL are element counts (1e4, 100000, ...; default 1e4 1e5 1e6), rounded to
 !> a square nx x nx mesh. Each case runs two phases, each on 1 thread and
@@ -30,7 +34,7 @@ program raccord_bench
   use raccord_error, only: error_t
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, element_name
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force, make_finite, &
-    block_watch_t, init_watch
+    block_watch_t, init_watch, make_axisymmetric
   use raccord_material, only: MAT_NEO_HOOKE, VOL_FULL, VOL_MEAN
   use raccord_model, only: model_t, set_model_threads
   use raccord_state, only: state_t, init_state
@@ -42,11 +46,11 @@ program raccord_bench
   implicit none
 
   integer, parameter :: max_sizes = 16, max_repeat = 99
-  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads, kin, kin0, kin1
+  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads, kin, kin0, kin1, kin_step
   integer(i8) :: sizes(max_sizes)
   real(wp) :: min_time
 
-  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, stat)
+  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, kin_step, stat)
   if (stat /= 0) error stop 1
 
   write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
@@ -62,8 +66,8 @@ program raccord_bench
     'MiB_kern', 'MiB_step', 'B/elem', 'balance'
   cases: do it = 1, ntypes
     do is = 1, nsizes
-      do kin = kin0, kin1
-        call run_case(types(it), kin == 2, sizes(is), min_time, nrep, nthreads)
+      do kin = kin0, kin1, kin_step
+        call run_case(types(it), kin == 2, kin == 3, sizes(is), min_time, nrep, nthreads)
       end do
     end do
   end do cases
@@ -72,17 +76,18 @@ program raccord_bench
 contains
 
   subroutine usage()
-    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--kinematics small|finite|all] ' // &
+    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--kinematics small|finite|all|axi|small-axi] ' // &
       '[--threads T] [--min-time SECONDS] [--repeat N] [NEL ...]'
-    write(output_unit, '(a)') '  --kinematics: small strain (default), finite strain (neo-Hooke; type Q4f, Q8f) or both'
+    write(output_unit, '(a)') '  --kinematics: small strain (default), finite strain (neo-Hooke; type Q4f, Q8f) or both;'
+    write(output_unit, '(a)') '    axi: small-strain axisymmetric (type Q4a, Q8a); small-axi: plane strain, then axisymmetric'
     write(output_unit, '(a)') '  NEL: element counts (default 1e4 1e5 1e6), each rounded to a square mesh'
     write(output_unit, '(a)') '  --threads: the thread count compared with 1 (default OMP_NUM_THREADS if set, ' // &
       'else the cores)'
     write(output_unit, '(a)') '  --min-time: least duration of one timing (default 0.3 s); --repeat: timings (default 5)'
   end subroutine usage
 
-  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, stat)
-    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, kin0, kin1, stat
+  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, kin_step, stat)
+    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, kin0, kin1, kin_step, stat
     integer(i8), intent(out) :: sizes(:)
     real(wp), intent(out) :: min_time
     character(len=64) :: arg
@@ -92,6 +97,7 @@ contains
     ntypes = 2
     kin0 = 1
     kin1 = 1
+    kin_step = 1
     nsizes = 0
     min_time = 0.3_wp
     nrep = 5
@@ -131,8 +137,11 @@ contains
         case ('small'); kin0 = 1; kin1 = 1
         case ('finite'); kin0 = 2; kin1 = 2
         case ('all'); kin0 = 1; kin1 = 2
+        case ('axi'); kin0 = 3; kin1 = 3
+        case ('small-axi'); kin0 = 1; kin1 = 3; kin_step = 2
         case default
-          write(error_unit, '(a)') 'raccord_bench: --kinematics takes small, finite or all, got "' // trim(arg) // '"'
+          write(error_unit, '(a)') 'raccord_bench: --kinematics takes small, finite, all, axi or small-axi, got "' // &
+            trim(arg) // '"'
           stat = 1
           return
         end select
@@ -185,9 +194,9 @@ contains
   !> One case: the mesh, the kernel phase on a block, then the step phase
   !> on a model built from the same mesh, each on 1 and nthreads threads;
   !> one output line per thread count.
-  subroutine run_case(etype, finite, nel_wanted, min_time, nrep, nthreads)
+  subroutine run_case(etype, finite, axi, nel_wanted, min_time, nrep, nthreads)
     integer, intent(in) :: etype, nrep, nthreads
-    logical, intent(in) :: finite
+    logical, intent(in) :: finite, axi
     integer(i8), intent(in) :: nel_wanted
     real(wp), intent(in) :: min_time
     type(elastic_block_t), allocatable :: blk
@@ -218,6 +227,7 @@ contains
     call init_elastic_block(blk, etype, conn, x, 2.1e11_wp, 0.3_wp, .false., 1.0_wp, err)
     if (finite .and. .not. err%failed()) &
       call make_finite(blk, x, MAT_NEO_HOOKE, merge(VOL_MEAN, VOL_FULL, etype == ELEM_Q4), 7800.0_wp, err)
+    if (axi .and. .not. err%failed()) call make_axisymmetric(blk, x, err)
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
@@ -228,7 +238,7 @@ contains
 
     ! phase 2: whole steps of the plate model
     call reset_peak_memory()
-    call plate_model(etype, x, conn, model, err, finite)
+    call plate_model(etype, x, conn, model, err, finite, axi)
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
@@ -240,7 +250,7 @@ contains
 
     do k = 1, nt
       write(output_unit, '(a4, i9, i9, i4, i7, 4f9.1, 3f8.1, 2f6.2, 2f9.1, f7.0, es10.1)') &
-        element_name(etype) // trim(merge('f', ' ', finite)), &
+        element_name(etype) // trim(merge('f', ' ', finite)) // trim(merge('a', ' ', axi)), &
         nel, nnode, nthr(k), steps(k), minval(kern(1:nrep, k)), median(kern(1:nrep, k)), &
         minval(step(1:nrep, k)), median(step(1:nrep, k)), median(split(1, 1:nrep, k)), &
         median(split(2, 1:nrep, k)), median(split(3, 1:nrep, k)), &
@@ -251,7 +261,7 @@ contains
     ! each (one step per t_each/T ns per element between them) is what the
     ! hardware gives when every core is busy, whatever the serial time.
     if (nt > 1) write(output_unit, '(a, i0, a, i0, a, f4.2, a, f0.1, a, f0.1, a, f4.2, a, i0, a)') &
-      '# ceiling ' // trim(element_name(etype) // merge('f', ' ', finite)) // ' ', &
+      '# ceiling ' // trim(element_name(etype) // merge('f', ' ', finite) // merge('a', ' ', axi)) // ' ', &
       nel, ': ', nthreads, ' serial runs at once give ', ceil_spd, &
       'x the throughput of one (', t_each, ' ns per element and step each, ', t_alone, &
       ' alone); the threaded step runs at ', t_each/(real(nthreads, wp)*median(step(1:nrep, nt))), &

@@ -71,10 +71,12 @@ contains
   !> program builds one (build_model): one body of steel-like material
   !> (E = 210 GPa, nu = 0.3, rho = 7800, plane strain, SI units), clamped on
   !> the left side x = 0, moving at v0 = (0, 1) m/s. x and conn are consumed.
-  subroutine plate_model(etype, x, conn, model, err, finite)
+  subroutine plate_model(etype, x, conn, model, err, finite, axi)
     integer, intent(in) :: etype
     !> a finite-strain neo-Hooke plate (default: small strain, Hooke)
     logical, intent(in), optional :: finite
+    !> an axisymmetric body (x = r; the clamped side x = 0 is the axis)
+    logical, intent(in), optional :: axi
     real(wp), allocatable, intent(inout) :: x(:,:)
     integer, allocatable, intent(inout) :: conn(:,:)
     type(model_t), intent(out) :: model
@@ -117,6 +119,7 @@ contains
         scene%bodies(1)%material = MAT_NEO_HOOKE
       end if
     end if
+    if (present(axi)) scene%bodies(1)%axisymmetric = axi
     bc%set = 'left'
     bc%kind = BC_FIXED
     bc%comp = [.true., .true.]

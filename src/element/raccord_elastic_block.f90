@@ -626,7 +626,7 @@ contains
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), rinv, blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_AXI_Q4)
-            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
+            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           case (KERN_AXI_Q8)
             call kernel_axi_q8(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           end select

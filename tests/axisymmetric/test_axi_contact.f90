@@ -33,8 +33,8 @@ program test_axi_contact
   slow = trim(arg) == 'slow'
   if (slow) then
     call run_tests('axi_contact_slow', [ &
-      new_test('Hertz sphere, Q4, mortar P0', test_hertz_p0), &
-      new_test('Hertz sphere, Q8, mortar P1', test_hertz_q8)])
+      new_test('slow: Hertz sphere, Q4, mortar P0', test_hertz_p0), &
+      new_test('slow: Hertz sphere, Q8, mortar P1', test_hertz_q8)])
   else
     call run_tests('axi_contact', [ &
       new_test('patch test, coaxial cylinders 5:7 (Q4): mortar P1, P0 exact; NTS bounded', test_patch_q4), &
