@@ -35,9 +35,10 @@ contains
   !>   u = (q0 + xi q1 + eta q2 + xi eta q3)/4,
   !> and the nodal forces are f_a = sum_k c_ak p_k/4 with p_k the Gauss sums of
   !> the stresses against the same basis (theory-axisymmetric.md A.2). The
-  !> same K as the generic form in about half the flops (tested against the Gauss-sum stiffness, as Q8's generic
-  !> form, raccord_axi_kernel_body.inc). The Gauss points are in the block's order, g = i + 2 (j - 1)
-  !> at (xi, eta) = (gx(i), gx(j)), gx = -+1/sqrt(3).
+  !> same K as the generic form (raccord_axi_kernel_body.inc, Q8's) in about
+  !> half the flops; tested against the Gauss-sum stiffness. The Gauss
+  !> points are in the block's order, g = i + 2 (j - 1) at (xi, eta) =
+  !> (gx(i), gx(j)), gx = -+1/sqrt(3).
   pure subroutine kernel_axi_q4(nc, lam, mu, h, hoop, ue, fe)
     integer, parameter :: ngp = 4
     integer, intent(in) :: nc

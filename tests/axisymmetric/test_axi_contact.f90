@@ -31,7 +31,9 @@ program test_axi_contact
 
   call get_command_argument(1, arg)
   slow = trim(arg) == 'slow'
-  if (slow) then
+  if (trim(arg) == 'study') then
+    call run_tests('axi_hertz_study', [new_test('study: Hertz sphere, Q4, mesh levels L1-L3', test_study)])
+  else if (slow) then
     call run_tests('axi_contact_slow', [ &
       new_test('slow: Hertz sphere, Q4, mortar P0', test_hertz_p0), &
       new_test('slow: Hertz sphere, Q8, mortar P1', test_hertz_q8)])
@@ -221,18 +223,21 @@ contains
   !> r: mortar's multiplier lam_n, node-to-segment's `pressure` (ring force
   !> over the ring area the node carries). Peak: the value at the axis;
   !> contact radius: the zero crossing of the piecewise-linear profile.
-  subroutine hertz_case(failure, deck, mortar, h)
+  subroutine hertz_case(failure, deck, mortar, h, study)
     type(failure_t), allocatable, intent(inout) :: failure
     character(len=*), intent(in) :: deck
     logical, intent(in) :: mortar
     real(wp), intent(in) :: h          !< slave element size at the contact
+    logical, intent(in), optional :: study    !< print a table row of the mesh study
     type(scene_run_t), allocatable :: run
     type(error_t) :: err
     real(wp), allocatable :: r(:), pv(:)
-    real(wp) :: p_load, a, p0, peak, radius
-    integer :: i, n, k
+    real(wp) :: p_load, a, p0, peak, radius, rms, t0, t1
+    integer :: i, n, k, m
     allocate(run)
+    call cpu_time(t0)
     call run_deck('tests/axisymmetric/data/' // deck, run, err)
+    call cpu_time(t1)
     call check(failure, .not. err%failed(), deck // ': run failed')
     if (allocated(failure)) return
     associate (pair => run%pairs(1))
@@ -260,6 +265,20 @@ contains
       write(*, '(a,f9.1,a,f7.2,a,f7.4,a,f7.2,a,f6.2,a,f7.3,a,es9.2)') '        ' // deck // ': P ', p_load, &
         ', peak ', 100.0_wp*(peak/p0 - 1.0_wp), ' % of p0; radius ', radius, ' (', &
         100.0_wp*(radius/a - 1.0_wp), ' % of a = ', a, '; h/a ', h/a, '), P / load - 1 ', p_load/15707.963_wp - 1.0_wp
+      ! RMS of (p - p_Hertz)/p0 over the nodes with r < a
+      rms = 0.0_wp
+      m = 0
+      do i = 1, n
+        if (r(i) >= a) cycle
+        rms = rms + (pv(i) - p0*sqrt(1.0_wp - (r(i)/a)**2))**2
+        m = m + 1
+      end do
+      rms = sqrt(rms/real(max(m, 1), wp))/p0
+      if (present(study)) write(*, '(a,f6.3,a,i6,a,i7,a,f7.2,a,f7.2,a,f7.2,a,f7.2,a,f8.1,a)') '| ' // deck // ' | ', &
+        h/a, ' | ', run%model%nelem, ' | ', run%state%step, ' | ', 100.0_wp*rms, ' % | ', &
+        100.0_wp*(pv(1)/p0 - 1.0_wp), ' % | ', 100.0_wp*(maxval(pv)/p0 - 1.0_wp), ' % | ', &
+        100.0_wp*(radius/a - 1.0_wp), ' % | ', t1 - t0, ' |'
+      if (present(study)) return
       call check(failure, pair%failed_total == 0, deck // ': unconverged multiplier steps')
       call check(failure, abs(radius - a) <= h, deck // ': contact radius off by more than one element')
       call check_close(failure, peak, p0, deck // ': peak pressure against p0', rel_tol=merge(0.03_wp, 0.05_wp, mortar))
@@ -302,4 +321,21 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call hertz_case(failure, 'hertz_axi_q8_mortar_p1.nml', .true., 0.1_wp)
   end subroutine test_hertz_q8
+
+  !> The mesh study of doc/accuracy-cost.md section 14: Q4, slave = block
+  !> top, three interface spacings (h/a 0.2, 0.1, 0.05), mortar P1 and
+  !> node-to-segment; prints table rows (error of the pressure profile,
+  !> RMS over r < a, at the axis, of the largest nodal value, of the
+  !> contact radius; CPU seconds). Measures only.
+  subroutine test_study(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    write(*, '(a)') '| deck | h/a | nelem | steps | err_rms | err_axis | err_max | err_radius | cpu_s |'
+    write(*, '(a)') '|---|---|---|---|---|---|---|---|---|'
+    call hertz_case(failure, 'hertz_axi_q4_L1_mortar_p1.nml', .true., 0.2_wp, .true.)
+    call hertz_case(failure, 'hertz_axi_q4_L1_nts.nml', .false., 0.2_wp, .true.)
+    call hertz_case(failure, 'hertz_axi_q4_mortar_p1.nml', .true., 0.1_wp, .true.)
+    call hertz_case(failure, 'hertz_axi_q4_nts.nml', .false., 0.1_wp, .true.)
+    call hertz_case(failure, 'hertz_axi_q4_L3_mortar_p1.nml', .true., 0.05_wp, .true.)
+    call hertz_case(failure, 'hertz_axi_q4_L3_nts.nml', .false., 0.05_wp, .true.)
+  end subroutine test_study
 end program test_axi_contact

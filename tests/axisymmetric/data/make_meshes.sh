@@ -14,3 +14,6 @@ mesh() {  # name nb nc hmax order
 }
 mesh hertz_axi_q4 "${1:-20}" "${2:-24}" 4.0 1   # h = a/10 (block), a/12 (sphere)
 mesh hertz_axi_q8 10 12 4.0 2                   # Q8, node spacing about that of the Q4 mesh
+# the mesh study (doc/accuracy-cost.md section 14): coarser and finer interfaces
+mesh hertz_axi_q4_L1 10 12 4.0 1
+mesh hertz_axi_q4_L3 40 48 4.0 1
