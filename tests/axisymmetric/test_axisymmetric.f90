@@ -24,7 +24,8 @@ program test_axisymmetric
     new_test('uniform radial expansion is exact, axis included', test_expansion), &
     new_test('explicit run: rigid translation along the axis keeps zero stress', test_translation), &
     new_test('explicit run: radial expansion settles on the closed-form hoop stress', test_expansion_run), &
-    new_test('refused: node at r < 0, mixed hypotheses, driven u_r on the axis', test_refused)])
+    new_test('refused: node at r < 0, mixed hypotheses, driven u_r on the axis', test_refused), &
+    new_test('thickness ignored when axisymmetric; CAX elements in a plane deck run plane', test_ignored)])
 
 contains
 
@@ -378,4 +379,32 @@ contains
     call check(failure, index(emsg(err), '''left''') > 0 .and. index(emsg(err), 'axis') > 0, &
       'the message does not name the set')
   end subroutine test_refused
+
+  !> thickness = 2 on an axisymmetric body is ignored (the masses are those
+  !> of thickness 1 = the ring's); a CAX4 mesh under a plane deck is read
+  !> as Q4 and runs plane (raccord_model_build warns).
+  subroutine test_ignored(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(scene_run_t) :: run
+    type(error_t) :: err
+    integer :: u
+    call write_mesh_inp('thick.inp', 'rect', 4, 2, 1, [0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp], 'CAX4')
+    call prepare_deck(write_deck('thick', 'thick.inp', [character(len=1) :: ], '&time t_end = 1.0e-3 /', &
+      'thickness = 2.0'), run, err)
+    call check(failure, .not. err%failed(), 'thickness with an axisymmetric body refused: ' // emsg(err))
+    if (allocated(failure)) return
+    call check(failure, run%scene%bodies(1)%thickness == 1.0_wp, 'thickness not ignored')
+    call check_close(failure, sum(run%model%mass), pi, 'ring mass rho pi r^2 h', rel_tol=1.0e-13_wp)
+    open(newunit=u, file='plane_cax.nml', status='replace', action='write')
+    write(u, '(a)') '&mesh file = ''thick.inp'' /'
+    write(u, '(a)') '&body name = ''body'', young = 210000.0, poisson = 0.3, density = 1.0 /'
+    write(u, '(a)') '&time t_end = 1.0e-3 /'
+    close(u)
+    call prepare_deck('./plane_cax.nml', run, err)
+    call check(failure, .not. err%failed(), 'plane deck on a CAX mesh refused: ' // emsg(err))
+    if (allocated(failure)) return
+    call check(failure, run%mesh%axi_types == 'CAX4', 'the CAX types were not recorded: ''' // run%mesh%axi_types // '''')
+    call check(failure, .not. run%model%axisymmetric, 'a plane deck ran axisymmetric')
+    call check_close(failure, sum(run%model%mass), 1.0_wp, 'plane mass rho A t', rel_tol=1.0e-13_wp)
+  end subroutine test_ignored
 end program test_axisymmetric
