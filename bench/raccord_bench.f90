@@ -1,16 +1,21 @@
 !> raccord_bench: timings of the explicit time step on in-memory structured
 !> meshes (doc/performance.md).
 !>
-!>   raccord_bench [--type q4|q8|all] [--kinematics small|finite|all]
+!>   raccord_bench [--type q4|q8|all] [--kinematics small|finite|all|axi|small-axi]
 !>                 [--material elastic|j2|all] [--threads T]
 !>                 [--min-time SECONDS] [--repeat N] [NEL ...]
 !>
 !> --kinematics finite times the finite-strain neo-Hooke kernel (type column
 !> Q4f / Q8f; Q4 with mean dilatation, as a scene gets by default); all
 !> times each small-strain case and then its finite-strain twin, back to back.
+!> --kinematics axi times the small-strain axisymmetric kernel (type Q4a /
+!> Q8a, raccord_axi_kernel) on the same mesh read as an r-z section (x = r,
+!> the clamped side on the axis); small-axi times each plane-strain case and
+!> then its axisymmetric twin, back to back.
 !> --material j2 times the J2 elastoplastic kernels instead (type Q4p, Q4pf,
 !> ...; mean dilatation, sigma_y0 = 100 MPa so that part of the kernel
-!> phase's field yields); all times the elastic case, then its j2 twin.
+!> phase's field yields; not with axi); all times the elastic case, then
+!> its j2 twin.
 !>
 !> NEL are element counts (1e4, 100000, ...; default 1e4 1e5 1e6), rounded to
 !> a square nx x nx mesh. Each case runs two phases, each on 1 thread and
@@ -34,7 +39,7 @@ program raccord_bench
   use raccord_error, only: error_t
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, element_name
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force, make_finite, &
-    block_watch_t, init_watch, make_plastic, block_plastic_t, init_plastic
+    block_watch_t, init_watch, make_axisymmetric, make_plastic, block_plastic_t, init_plastic
   use raccord_material, only: MAT_NEO_HOOKE, MAT_J2, VOL_FULL, VOL_MEAN, KIN_SMALL, KIN_FINITE
   use raccord_plasticity, only: j2_t
   use raccord_model, only: model_t, set_model_threads
@@ -47,11 +52,12 @@ program raccord_bench
   implicit none
 
   integer, parameter :: max_sizes = 16, max_repeat = 99
-  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads, kin, kin0, kin1, mat, mat0, mat1
+  integer :: nsizes, ntypes, types(2), it, is, stat, nrep, nthreads, kin, kin0, kin1, kin_step, mat, mat0, mat1
   integer(i8) :: sizes(max_sizes)
   real(wp) :: min_time
 
-  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, mat0, mat1, stat)
+  call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, kin_step, mat0, mat1, &
+    stat)
   if (stat /= 0) error stop 1
 
   write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
@@ -67,9 +73,10 @@ program raccord_bench
     'MiB_kern', 'MiB_step', 'B/elem', 'balance'
   cases: do it = 1, ntypes
     do is = 1, nsizes
-      do kin = kin0, kin1
+      do kin = kin0, kin1, kin_step
         do mat = mat0, mat1
-          call run_case(types(it), kin == 2, mat == 2, sizes(is), min_time, nrep, nthreads)
+          if (mat == 2 .and. kin == 3) cycle     ! j2 is not built in axisymmetry
+          call run_case(types(it), kin == 2, kin == 3, mat == 2, sizes(is), min_time, nrep, nthreads)
         end do
       end do
     end do
@@ -79,18 +86,20 @@ program raccord_bench
 contains
 
   subroutine usage()
-    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--kinematics small|finite|all] ' // &
+    write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--kinematics small|finite|all|axi|small-axi] ' // &
       '[--material elastic|j2|all] [--threads T] [--min-time SECONDS] [--repeat N] [NEL ...]'
-    write(output_unit, '(a)') '  --kinematics: small strain (default), finite strain (neo-Hooke; type Q4f, Q8f) or both'
-    write(output_unit, '(a)') '  --material: elastic (default), J2 plasticity (type Q4p, Q4pf, ...) or both'
+    write(output_unit, '(a)') '  --kinematics: small strain (default), finite strain (neo-Hooke; type Q4f, Q8f) or both;'
+    write(output_unit, '(a)') '    axi: small-strain axisymmetric (type Q4a, Q8a); small-axi: plane strain, then axisymmetric'
+    write(output_unit, '(a)') '  --material: elastic (default), J2 plasticity (type Q4p, Q4pf, ...; not with axi) or both'
     write(output_unit, '(a)') '  NEL: element counts (default 1e4 1e5 1e6), each rounded to a square mesh'
     write(output_unit, '(a)') '  --threads: the thread count compared with 1 (default OMP_NUM_THREADS if set, ' // &
       'else the cores)'
     write(output_unit, '(a)') '  --min-time: least duration of one timing (default 0.3 s); --repeat: timings (default 5)'
   end subroutine usage
 
-  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, mat0, mat1, stat)
-    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, kin0, kin1, mat0, mat1, stat
+  subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, kin_step, &
+      mat0, mat1, stat)
+    integer, intent(out) :: types(2), ntypes, nsizes, nrep, nthreads, kin0, kin1, kin_step, mat0, mat1, stat
     integer(i8), intent(out) :: sizes(:)
     real(wp), intent(out) :: min_time
     character(len=64) :: arg
@@ -100,6 +109,7 @@ contains
     ntypes = 2
     kin0 = 1
     kin1 = 1
+    kin_step = 1
     mat0 = 1
     mat1 = 1
     nsizes = 0
@@ -141,8 +151,11 @@ contains
         case ('small'); kin0 = 1; kin1 = 1
         case ('finite'); kin0 = 2; kin1 = 2
         case ('all'); kin0 = 1; kin1 = 2
+        case ('axi'); kin0 = 3; kin1 = 3
+        case ('small-axi'); kin0 = 1; kin1 = 3; kin_step = 2
         case default
-          write(error_unit, '(a)') 'raccord_bench: --kinematics takes small, finite or all, got "' // trim(arg) // '"'
+          write(error_unit, '(a)') 'raccord_bench: --kinematics takes small, finite, all, axi or small-axi, got "' // &
+            trim(arg) // '"'
           stat = 1
           return
         end select
@@ -207,9 +220,9 @@ contains
   !> One case: the mesh, the kernel phase on a block, then the step phase
   !> on a model built from the same mesh, each on 1 and nthreads threads;
   !> one output line per thread count.
-  subroutine run_case(etype, finite, plastic, nel_wanted, min_time, nrep, nthreads)
+  subroutine run_case(etype, finite, axi, plastic, nel_wanted, min_time, nrep, nthreads)
     integer, intent(in) :: etype, nrep, nthreads
-    logical, intent(in) :: finite, plastic
+    logical, intent(in) :: finite, axi, plastic
     integer(i8), intent(in) :: nel_wanted
     real(wp), intent(in) :: min_time
     type(elastic_block_t), allocatable :: blk
@@ -223,7 +236,8 @@ contains
     real(wp) :: ceil_spd, t_alone, t_each
     character(len=:), allocatable :: label
 
-    label = element_name(etype) // trim(merge('p', ' ', plastic)) // trim(merge('f', ' ', finite))
+    label = element_name(etype) // trim(merge('p', ' ', plastic)) // trim(merge('f', ' ', finite)) // &
+      trim(merge('a', ' ', axi))
     nthr = [1, nthreads]
     nt = 2
     if (nthreads == 1) nt = 1
@@ -246,6 +260,7 @@ contains
     else if (finite .and. .not. err%failed()) then
       call make_finite(blk, x, MAT_NEO_HOOKE, merge(VOL_MEAN, VOL_FULL, etype == ELEM_Q4), 7800.0_wp, err)
     end if
+    if (axi .and. .not. err%failed()) call make_axisymmetric(blk, x, err)
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
@@ -256,7 +271,7 @@ contains
 
     ! phase 2: whole steps of the plate model
     call reset_peak_memory()
-    call plate_model(etype, x, conn, model, err, finite, plastic)
+    call plate_model(etype, x, conn, model, err, finite, axi, plastic)
     if (err%failed()) then
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return

@@ -71,10 +71,12 @@ contains
   !> program builds one (build_model): one body of steel-like material
   !> (E = 210 GPa, nu = 0.3, rho = 7800, plane strain, SI units), clamped on
   !> the left side x = 0, moving at v0 = (0, 1) m/s. x and conn are consumed.
-  subroutine plate_model(etype, x, conn, model, err, finite, plastic)
+  subroutine plate_model(etype, x, conn, model, err, finite, axi, plastic)
     integer, intent(in) :: etype
     !> a finite-strain neo-Hooke plate (default: small strain, Hooke)
     logical, intent(in), optional :: finite
+    !> an axisymmetric body (x = r; the clamped side x = 0 is the axis)
+    logical, intent(in), optional :: axi
     !> a J2 plate (sigma_y0 = 100 MPa, H = 2.1 GPa; with finite, finite strain)
     logical, intent(in), optional :: plastic
     real(wp), allocatable, intent(inout) :: x(:,:)
@@ -119,6 +121,7 @@ contains
         scene%bodies(1)%material = MAT_NEO_HOOKE
       end if
     end if
+    if (present(axi)) scene%bodies(1)%axisymmetric = axi
     if (present(plastic)) then
       if (plastic) then
         scene%bodies(1)%material = MAT_J2

@@ -68,7 +68,8 @@ contains
         c = sqrt(s%young/s%density)
         call log_raw('body    ' // b%name // ': ' // str(size(b%elems)) // ' elements (' // &
           block_types(b) // '), E = ' // str(s%young, 4) // ', nu = ' // str(s%poisson, 3) // &
-          ', rho = ' // str(s%density, 4) // ', ' // merge('plane stress', 'plane strain', s%plane_stress) // &
+          ', rho = ' // str(s%density, 4) // ', ' // &
+          merge('axisymmetric', merge('plane stress', 'plane strain', s%plane_stress), s%axisymmetric) // &
           ', ' // kinematics_name(s%kinematics) // ' strain, ' // material_name(s%material) // &
           finite_detail(b) // plastic_detail(s) // &
           ', mass = ' // str(b%mass, 4) // ', sqrt(E/rho) = ' // str(c, 4) // ', damping alpha = ' // &

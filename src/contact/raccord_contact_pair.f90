@@ -92,6 +92,8 @@ contains
         if (err%failed()) return
         call build_contact_surface(mesh, spec%master, where // ' master', pair%master, err)
         if (err%failed()) return
+        pair%slave%axisymmetric = model%axisymmetric
+        pair%master%axisymmetric = model%axisymmetric
         if (spec%method == METHOD_MORTAR) then
           call init_mortar(pair%slave, pair%master, spec%multiplier, where, pair%mortar, err)
           if (err%failed()) return
@@ -170,7 +172,7 @@ contains
     type(error_t), intent(inout) :: err
     integer :: i, p, j, m
     integer(i8) :: c0, c1, c2
-    real(wp) :: wc0
+    real(wp) :: wc0, lmin
 
     call system_clock(c0)
     ! Positions at t(n), predicted positions and increments, at the surface nodes only.
@@ -259,6 +261,10 @@ contains
     pair%nslip = 0
     pair%corner_status = ST_OPEN
     pair%corner_force = 0.0_wp
+    ! Weights below this are zero up to round-off (only an axisymmetric
+    ! quadratic edge's node on the axis has one).
+    lmin = 0.0_wp
+    if (m > 0) lmin = 1.0e-12_wp*maxval(pair%cs%length(1:m))
     do j = 1, m
       i = pair%cs%snode(j)
       if (i > pair%slave%nnode) then
@@ -277,8 +283,16 @@ contains
       pair%lam_t(i) = pair%work%tau(j)
       pair%slip(i) = pair%work%gt(j)
       ! Contact stress: weighted multiplier over the length it acts on.
-      pair%pressure(i) = pair%work%fn(j)/pair%cs%length(j)
-      pair%shear(i) = pair%work%ft(j)/pair%cs%length(j)
+      if (pair%cs%length(j) > lmin) then
+        pair%pressure(i) = pair%work%fn(j)/pair%cs%length(j)
+        pair%shear(i) = pair%work%ft(j)/pair%cs%length(j)
+      else if (pair%method == METHOD_MORTAR) then
+        ! Axisymmetric quadratic edge, end node on the axis: its ring weight
+        ! int N r ds is 0 (so is its share of a uniform pressure); the
+        ! multiplier is the pressure there (doc/theory-axisymmetric.md).
+        pair%pressure(i) = pair%work%lam(j)
+        pair%shear(i) = pair%work%tau(j)
+      end if
       pair%normal_sum = pair%normal_sum + pair%work%fn(j)
       pair%tangent_sum = pair%tangent_sum + pair%work%ft(j)
       if (pair%st_c(j) /= ST_OPEN) pair%nactive = pair%nactive + 1

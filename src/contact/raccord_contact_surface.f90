@@ -21,6 +21,9 @@ module raccord_contact_surface
     real(wp), allocatable :: s0(:)          !< reference arc length of each node of `node`
     real(wp) :: h_max = 0.0_wp              !< longest segment (reference)
     real(wp) :: h_min = 0.0_wp              !< shortest segment (reference)
+    !> axisymmetric bodies (x = r): surface integrals carry 2 pi r, so
+    !> weights and tributary measures are areas of surfaces of revolution
+    logical :: axisymmetric = .false.
   end type contact_surface_t
 
   public :: build_contact_surface

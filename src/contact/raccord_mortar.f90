@@ -26,7 +26,7 @@
 !> only the slave segments with candidates are visited: the cost follows
 !> the part of the slave near the master, not the surfaces' length.
 module raccord_mortar
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, pi
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_scene, only: MULT_P1, MULT_P0, MULT_DUAL
   use raccord_shape, only: shape_line
@@ -437,6 +437,8 @@ contains
         ts = matmul(xs(:, 1:nen), dns(1:nen))
         n = matmul(nn(:, 1:nen), ns(1:nen))
         dg = norm2(ts)*wgt                       ! dGamma = |dx_s/dxi| dxi
+        ! axisymmetric: dGamma = 2 pi r |dx_s/dxi| dxi (method brief 9.4)
+        if (slave%axisymmetric) dg = dg*(2.0_wp*pi*ps(1))
         eta = intersect_ray(nenm, xm, ps, n)
         call shape_line(nenm, eta, nm, dnm)
         call multiplier_basis(nen, w%multiplier, xi, psi)
@@ -582,7 +584,8 @@ contains
   !> Slave nodal normals at the nodes of the near segments: the normalised
   !> mean of the outward unit normals of the segments meeting at the node,
   !> each taken at the node (for 3-node segments the quadratic's own
-  !> tangent there), summed in chain order. Also clears their `covered`.
+  !> tangent there), summed in chain order; along the axis at an
+  !> axisymmetric surface's axis node. Also clears their `covered`.
   subroutine slave_normals(slave, x, vl, w)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: x(:,:)
@@ -609,6 +612,14 @@ contains
             w%nrm(:, c) = w%nrm(:, c) + outward_normal(slave%nen_seg, xs, NODE_XI(w%adj_loc(t, c)))
           end if
         end do
+        ! A surface of revolution meets the axis at a right angle: at a node
+        ! on the axis (r = 0) the normal is along the axis (its one segment
+        ! tilts as the surface deforms; a tilted normal there would project
+        ! a master corner on the axis off the slave end and leave the axis
+        ! node without its multiplier).
+        if (slave%axisymmetric) then
+          if (x(1, slave%node(c)) == 0.0_wp) w%nrm(1, c) = 0.0_wp
+        end if
         w%nrm(:, c) = w%nrm(:, c)/max(norm2(w%nrm(:, c)), tiny(1.0_wp))
       end do
     end do

@@ -22,7 +22,7 @@
 !> nodes) it is wavy by dt^2 f/m, which tilts the end tangents of quadratic
 !> segments and would inject spurious tangential forces.
 module raccord_node_to_segment
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, pi
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
@@ -189,6 +189,10 @@ contains
       do a = 1, master%nen_seg
         if (a == 1 .and. previous_in_set(t, k)) cycle
         associate (nv => nodal_normal(:, master%seg(a, k)))
+          ! along the axis at an axisymmetric surface's axis node (raccord_mortar, slave_normals)
+          if (master%axisymmetric) then
+            if (x(1, master%seg(a, k)) == 0.0_wp) nv(1) = 0.0_wp
+          end if
           nv = nv/max(norm2(nv), tiny(1.0_wp))
         end associate
       end do
@@ -249,7 +253,12 @@ contains
         ! (start), +stride (end), +1 (mid of a 3-node segment).
         do a = 1, surf%nen_seg
           associate (pos => chain_position(surf, k, a, stride))
-            trib(pos) = trib(pos) + sh(a)*norm2(dx)*gw(g)
+            if (surf%axisymmetric) then
+              ! the area of the ring the node carries: 2 pi int N_a r ds
+              trib(pos) = trib(pos) + sh(a)*norm2(dx)*gw(g)*(2.0_wp*pi*xx(1))
+            else
+              trib(pos) = trib(pos) + sh(a)*norm2(dx)*gw(g)
+            end if
           end associate
         end do
       end do

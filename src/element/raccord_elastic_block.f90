@@ -59,6 +59,7 @@ module raccord_elastic_block
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
   use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
+  use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
   implicit none
   private
 
@@ -68,6 +69,7 @@ module raccord_elastic_block
   public :: make_plastic, init_plastic, watch_dissipation, reports_energy
   public :: add_nodal_plastic
   public :: element_eigenvalue_bounds, scale_element_density, finite_w2_elements
+  public :: make_axisymmetric
 
   !> Elements per chunk of the internal-force kernel (a multiple of the SIMD width).
   integer, parameter :: chunk_len = fin_chunk_len
@@ -84,6 +86,8 @@ module raccord_elastic_block
   !> J2 plasticity (small or finite strain, Q4 or Q8).
   integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE_Q4 = 3, KERN_FINITE_Q8 = 4
   integer, parameter :: KERN_J2_SMALL_Q4 = 5, KERN_J2_SMALL_Q8 = 6, KERN_J2_FINITE_Q4 = 7, KERN_J2_FINITE_Q8 = 8
+  !> small-strain axisymmetric Q4 and Q8 (make_axisymmetric, raccord_axi_kernel)
+  integer, parameter :: KERN_AXI_Q4 = 21, KERN_AXI_Q8 = 22
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
   !> M11, M12, M22 (eq. 6.5).
@@ -150,6 +154,12 @@ module raccord_elastic_block
     !> (chunk_len, nchunk) 1/rho of each element for the kernel's wave-speed
     !> estimate: 1/rho0, or 1/(s_e rho0) under mass scaling (scale_element_density)
     real(wp), allocatable, private :: rinv(:,:)
+    ! Axisymmetric only (Q4 and Q8; make_axisymmetric): h and c above hold
+    ! sqrt(c) J^-1 and c = w detJ 2 pi r_g for Q4 too
+    !> x is the radius, y the axis; integrals over 2 pi r (doc/theory-axisymmetric.md)
+    logical :: axisymmetric = .false.
+    real(wp), allocatable, private :: hoop(:,:,:)    !< (chunk_len, ngp, nchunk) sqrt(c)/r_g
+    logical, allocatable, private :: on_axis(:,:)    !< (nen, nel) node at r = 0 (u_r held at 0)
   end type elastic_block_t
 
   !> What the finite-strain kernel reports per chunk each step (the caller
@@ -276,6 +286,39 @@ module raccord_elastic_block
       real(wp), intent(in) :: density
       type(error_t), intent(inout) :: err
     end subroutine make_finite
+    !> Turn a small-strain block set up by init_elastic_block (thickness 1,
+    !> plane strain) into an axisymmetric block: x is the radius r >= 0, y
+    !> the axis; every integral carries 2 pi r (doc/theory-axisymmetric.md).
+    !> Nodes at r = 0 are the caller's to hold radially (raccord_model_build).
+    !> Fails (EXIT_INPUT) on r < 0, naming the element.
+    module subroutine make_axisymmetric(blk, x, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine make_axisymmetric
+    !> ke += the hoop terms of the axisymmetric element stiffness
+    !> (B rows tt with rr, zz, tt), dof order as element_stiffness.
+    pure module subroutine axi_hoop_stiffness(blk, e, ke)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(inout) :: ke(:,:)
+    end subroutine axi_hoop_stiffness
+    !> Zero the rows and columns of the radial dofs of element e's nodes on
+    !> the axis (held there, they take no part in the element eigenvalue).
+    pure module subroutine axi_drop_axis_dofs(blk, e, ke)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(inout) :: ke(:,:)
+    end subroutine axi_drop_axis_dofs
+    !> The nodal stress (strain = .false.) or strain contributions of
+    !> axisymmetric element e: (rr, zz, rz, tt).
+    pure module subroutine add_element_axi(blk, e, u, strain, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: e
+      real(wp), intent(in) :: u(:,:)
+      logical, intent(in) :: strain
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_element_axi
     !> Allocate a block's watch (one entry per chunk).
     module subroutine init_watch(blk, watch)
       type(elastic_block_t), intent(in) :: blk
@@ -700,6 +743,10 @@ contains
             call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
               blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
               ue, fe, sgp, act, en, dis, jm, jel, w2)
+          case (KERN_AXI_Q4)
+            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
+          case (KERN_AXI_Q8)
+            call kernel_axi_q8(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           end select
           if (watched .and. reports_energy(blk)) then
             watch%energy(ic) = en
@@ -861,7 +908,8 @@ contains
     !> a copy of them at u); required for their stress
     type(block_plastic_t), intent(in), optional :: plastic
     integer :: col, k, e, e0, e1, what
-    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 5
+    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 9
+    integer, parameter :: axi_stress = 5, axi_strain = 6
     what = small_stress
     if (present(strain)) then
       if (strain) what = small_strain
@@ -871,6 +919,7 @@ contains
       if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
       what = j2_stress
     end if
+    if (blk%axisymmetric) what = what + 4
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, s, wsum, what, plastic) &
     !$omp   private(col, k, e, e0, e1)
@@ -897,6 +946,10 @@ contains
           end do
         case (j2_stress)
           call add_group_j2_stress(blk, blk%colour_group(k), u, plastic, s, wsum)
+        case (axi_stress, axi_strain)
+          do e = e0, e1
+            call add_element_axi(blk, e, u, what == axi_strain, s, wsum)
+          end do
         end select
       end do groups
       !$omp end do

@@ -44,7 +44,7 @@ contains
   pure real(wp) function gauss_c(blk, e, g) result(cg)
     type(elastic_block_t), intent(in) :: blk
     integer, intent(in) :: e, g
-    if (blk%etype == ELEM_Q4) then
+    if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
       cg = blk%wts(g)*blk%thickness*q4_detj(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
     else
       cg = blk%c(g, e)
@@ -58,7 +58,7 @@ contains
     real(wp), intent(out) :: gr(:,:)
     real(wp) :: h11, h21, h12, h22, jac(2, 2), detj, sq
     integer :: ic, il, a
-    if (blk%etype == ELEM_Q4) then
+    if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
       ! H = sqrt(c) J^-1 from the map (eqs. 1.4, 6.2), as stored for Q8
       jac = q4_jacobian(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
       detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
@@ -101,6 +101,7 @@ contains
         end do
       end do
     end do
+    if (blk%axisymmetric) call axi_hoop_stiffness(blk, e, ke)
   end procedure element_stiffness
 
   !> Lumped masses of element e (theory eq. 4.1-4.2): row sum of the
@@ -174,6 +175,7 @@ contains
       w2(e) = 0.0_wp
       call element_stiffness(blk, e, ke(1:n, 1:n))
       call element_lumped_mass(blk, e, density, me)
+      if (blk%axisymmetric) call axi_drop_axis_dofs(blk, e, ke(1:n, 1:n))
       do i = 1, blk%nen
         s(2*i - 1:2*i) = 1.0_wp/sqrt(me(i))
       end do

@@ -1,7 +1,8 @@
 !> Reader for the Abaqus / CalculiX .inp subset that describes a 2D mesh.
 !>
 !> Read: *NODE (id, x, y[, z]); *ELEMENT, TYPE=CPE4|CPS4|CPE8|CPS8 (and the
-!> R variants, read as fully integrated); *NSET and *ELSET (ids, set names,
+!> R variants, read as fully integrated; CAX4, CAX8 and their R variants
+!> read as Q4/Q8 too, the deck's hypothesis deciding axisymmetry); *NSET and *ELSET (ids, set names,
 !> or GENERATE ranges); *SURFACE, TYPE=ELEMENT with "elset-or-element, Sn"
 !> faces; *INCLUDE, INPUT=file (textual, relative to the including file).
 !> Other keywords are material, step or load data and are skipped: the
@@ -231,8 +232,13 @@ contains
       call element_type(lower(typ), st%etype, st%nen, found)
       if (.not. found) then
         call raise_error(err, EXIT_INPUT, at // ': element TYPE=' // typ // ' is not supported; raccord ' // &
-          'reads CPE4, CPS4, CPE8, CPS8 (and CPE4R, CPS4R, CPE8R, CPS8R): ' // type_hint(lower(typ)))
+          'reads CPE4, CPS4, CAX4, CPE8, CPS8, CAX8 (and their R variants): ' // type_hint(lower(typ)))
         return
+      end if
+      if (index(lower(typ), 'cax') == 1) then
+        if (.not. allocated(d%axi_types)) d%axi_types = ''
+        if (index(d%axi_types, typ) == 0) d%axi_types = d%axi_types // merge(', ', '  ', len(d%axi_types) > 0) // typ
+        d%axi_types = trim(adjustl(d%axi_types))
       end if
       if (lower(typ(len(typ):)) == 'r' .and. index(st%reduced, typ) == 0) then
         if (len(st%reduced) > 0) st%reduced = st%reduced // ', '
@@ -489,10 +495,10 @@ contains
     logical, intent(out) :: found
     found = .true.
     select case (typ)
-    case ('cpe4', 'cps4', 'cpe4r', 'cps4r')
+    case ('cpe4', 'cps4', 'cpe4r', 'cps4r', 'cax4', 'cax4r')
       etype = ELEM_Q4
       nen = 4
-    case ('cpe8', 'cps8', 'cpe8r', 'cps8r')
+    case ('cpe8', 'cps8', 'cpe8r', 'cps8r', 'cax8', 'cax8r')
       etype = ELEM_Q8
       nen = 8
     case default
@@ -509,7 +515,7 @@ contains
         index(typ, 'cps6') == 1) then
       s = 'remesh with quadrilaterals'
     else if (index(typ, 'cax') == 1) then
-      s = 'axisymmetric elements are not supported; use a plane model'
+      s = 'axisymmetric elements are read as CAX4, CAX8 (and CAX4R, CAX8R); remesh with those'
     else
       s = 'remesh with 4- or 8-node plane quadrilaterals'
     end if

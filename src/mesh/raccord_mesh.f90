@@ -57,6 +57,10 @@ module raccord_mesh
     type(node_set_t), allocatable :: nsets(:)
     type(elem_set_t), allocatable :: esets(:)
     type(surface_t), allocatable :: surfaces(:)
+    !> axisymmetric element types of the file (Abaqus CAX4, CAX8, ...), read
+    !> as Q4/Q8; the deck's hypothesis decides (raccord_model_build warns on
+    !> a mismatch). '' when none.
+    character(len=:), allocatable :: axi_types
   end type mesh_t
 
   public :: nodes_per_element, element_name

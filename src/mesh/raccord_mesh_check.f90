@@ -53,6 +53,8 @@ contains
     call build_node_sets(d, node_map, new_node, mesh, err)
     if (err%failed()) return
     call build_surfaces(d, node_map, elem_map, new_node, mesh, err)
+    mesh%axi_types = ''
+    if (allocated(d%axi_types)) mesh%axi_types = d%axi_types
   end subroutine finalize_mesh
 
   !> File id -> draft index maps; a repeated id is an error at its second use.

@@ -56,6 +56,7 @@ module raccord_mesh_draft
     type(draft_group_t), allocatable :: nsets(:)
     type(draft_group_t), allocatable :: esets(:)
     type(draft_surface_t), allocatable :: surfaces(:)
+    character(len=:), allocatable :: axi_types         !< axisymmetric element types met (CAX4, ...), '' if none
   end type mesh_draft_t
 
 contains

@@ -97,6 +97,9 @@ module raccord_model
     !> Some body is finite strain: its stored energy enters the energy
     !> account and the stable step follows its deformation (variable step).
     logical :: has_finite = .false.
+    !> The bodies are axisymmetric (&body hypothesis = 'axisymmetric'): x is
+    !> the radius, forces are totals over 2 pi (doc/theory-axisymmetric.md)
+    logical :: axisymmetric = .false.
     !> Some body is J2 elastoplastic: its plastic work is a term of the
     !> energy balance, its internal variables part of the state
     logical :: has_plastic = .false.

@@ -9,10 +9,10 @@ module raccord_model_build
     find_surface, ELEM_Q4, ELEM_Q8
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
   use raccord_elastic_block, only: init_elastic_block, claim_first_touch, add_lumped_mass, add_body_force, max_eigenvalue_bound, &
-    make_finite, finite_w2_at_rest, make_plastic
+    make_finite, finite_w2_at_rest, make_plastic, make_axisymmetric
   use raccord_material, only: KIN_FINITE, MAT_NEO_HOOKE, MAT_J2, VOL_AUTO, VOL_FULL, VOL_MEAN
   use raccord_plasticity, only: j2_t
-  use raccord_edge_load, only: add_edge_traction
+  use raccord_edge_load, only: add_edge_traction, add_edge_traction_axi
   use raccord_model, only: model_t, body_t, support_t, surface_load_t, amplitude_t, requested_threads, set_model_threads
   use raccord_mass_scaling, only: apply_mass_scaling
   implicit none
@@ -33,12 +33,25 @@ contains
 
     model%nnode = mesh%nnode
     model%x = mesh%x
+    model%axisymmetric = scene%bodies(1)%axisymmetric    ! one hypothesis per scene (read_deck)
+    if (model%axisymmetric) then
+      call check_axisymmetric_mesh(scene, mesh, model, err)
+      if (err%failed()) return
+    else if (allocated(mesh%axi_types)) then
+      if (len(mesh%axi_types) > 0) call log_warn('build_model', 'mesh ' // mesh%source // ' has axisymmetric ' // &
+        'elements (' // mesh%axi_types // '), read as Q4/Q8, but the bodies are plane; write hypothesis = ' // &
+        '''axisymmetric'' in each &body if the model is axisymmetric')
+    end if
     call copy_amplitudes(scene, model)
     call build_bodies(scene, mesh, model, elem_body, err)
     if (err%failed()) return
     call claim_nodes(model)
     call build_boundaries(scene, mesh, model, elem_body, err)
     if (err%failed()) return
+    if (model%axisymmetric) then
+      call hold_axis_nodes(scene, mesh, model, err)
+      if (err%failed()) return
+    end if
     model%has_damping = any(model%alpha > 0.0_wp)
     call set_model_threads(model, requested_threads())
     if (model%nthreads > 1) call log_info('build_model', 'threads: ' // str(model%nthreads) // &
@@ -140,11 +153,18 @@ contains
           nblk = nblk + 1
           nen = nodes_per_element(et)
           conn = mesh%conn(1:nen, pack(elems, mesh%etype(elems) == et))
-          call init_elastic_block(body%blocks(nblk), et, conn, mesh%x, spec%young, spec%poisson, &
+          call init_elastic_block(body%blocks(nblk), et, conn, model%x, spec%young, spec%poisson, &
             spec%plane_stress, spec%thickness, err)
           if (err%failed()) then
             call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
             return
+          end if
+          if (spec%axisymmetric) then
+            call make_axisymmetric(body%blocks(nblk), model%x, err)
+            if (err%failed()) then
+              call prefix_error(err, where // ' (' // element_name(et) // ' elements)')
+              return
+            end if
           end if
           if (spec%material == MAT_J2) then
             ! The body's kernel: J2 plasticity, small or finite strain, with
@@ -379,7 +399,11 @@ contains
           xe(:, j) = mesh%x(:, surf%edge(j, k))
         end do
         fe = 0.0_wp
-        call add_edge_traction(nen, xe, traction, pressure, scene%bodies(ib)%thickness, fe)
+        if (model%axisymmetric) then
+          call add_edge_traction_axi(nen, xe, traction, pressure, fe)
+        else
+          call add_edge_traction(nen, xe, traction, pressure, scene%bodies(ib)%thickness, fe)
+        end if
         do j = 1, nen
           f(:, surf%edge(j, k)) = f(:, surf%edge(j, k)) + fe(:, j)
           touched(surf%edge(j, k)) = .true.
@@ -391,6 +415,97 @@ contains
     load%nodes = pack([(j, j = 1, mesh%nnode)], touched)
     load%force = f(:, load%nodes)
   end subroutine build_load
+
+  !> An axisymmetric mesh lies in x = r >= 0: a node of a body at r < 0 is
+  !> refused, naming it; nodes within round-off of the axis (|r| <= 1e-10
+  !> of the mesh's extent) are put on it (r = 0 exactly), where
+  !> hold_axis_nodes holds them radially.
+  subroutine check_axisymmetric_mesh(scene, mesh, model, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(inout) :: model
+    type(error_t), intent(inout) :: err
+    logical, allocatable :: used(:)
+    real(wp) :: tol
+    integer :: ib, ks, k, e, n
+    allocate(used(mesh%nnode), source=.false.)
+    do ib = 1, size(scene%bodies)
+      ks = find_elem_set(mesh, scene%bodies(ib)%elset)
+      if (ks == 0) cycle                  ! build_bodies reports it
+      do k = 1, size(mesh%esets(ks)%elems)
+        e = mesh%esets(ks)%elems(k)
+        associate (c => mesh%conn(:, e))
+          used(pack(c, c > 0)) = .true.
+        end associate
+      end do
+    end do
+    tol = 1.0e-10_wp*max(maxval(abs(mesh%x)), tiny(1.0_wp))
+    do n = 1, mesh%nnode
+      if (.not. used(n)) cycle
+      if (model%x(1, n) < -tol) then
+        call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': hypothesis = ''axisymmetric'': node ' // &
+          str(mesh%node_id(n)) // ' of mesh ' // mesh%source // ' lies at r = x = ' // str(model%x(1, n)) // &
+          ' < 0; x is the radius and y the axis of symmetry, so an axisymmetric section lies in x >= 0 ' // &
+          '(mesh the half section on the side x >= 0, or mirror the mesh in x)')
+        return
+      end if
+      if (abs(model%x(1, n)) <= tol) model%x(1, n) = 0.0_wp
+    end do
+  end subroutine check_axisymmetric_mesh
+
+  !> Nodes on the axis (r = 0) have u_r = 0 by symmetry: a fixed support on
+  !> their x component, set 'axis' (its reaction, a ring total, is the
+  !> radial force the symmetry takes, about 0). A deck that also fixes x
+  !> there is accepted (the same condition); a deck that drives x there to
+  !> a non-zero value is refused.
+  subroutine hold_axis_nodes(scene, mesh, model, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(model_t), intent(inout) :: model
+    type(error_t), intent(inout) :: err
+    type(support_t), allocatable :: sup(:)
+    integer, allocatable :: nodes(:), add(:)
+    integer :: i, n, k, j, nsup
+    nodes = pack([(i, i = 1, model%nnode)], model%node_body /= 0 .and. model%x(1, :) == 0.0_wp)
+    if (size(nodes) == 0) return
+    allocate(add(0))
+    do i = 1, size(nodes)
+      n = nodes(i)
+      k = model%dof_cdof(1, n)
+      if (k == 0) then
+        add = [add, n]
+        cycle
+      end if
+      associate (other => model%supports(model%cdof_support(k)))
+        if (other%driven .and. other%value(1) /= 0.0_wp) then
+          call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &boundary on set ''' // other%set // &
+            ''' drives the radial (x) displacement of node ' // str(mesh%node_id(n)) // ', which lies on the ' // &
+            'axis (r = 0), where symmetry holds it at 0; drop component x for the axis nodes of that set')
+          return
+        end if
+      end associate
+    end do
+    call log_info('build_model', 'axisymmetric: ' // str(size(nodes)) // ' nodes on the axis (r = 0) held ' // &
+      'radially (u_r = 0), ' // str(size(nodes) - size(add)) // ' of them already by the deck')
+    if (size(add) == 0) return
+    nsup = size(model%supports) + 1
+    allocate(sup(nsup))
+    sup(1:nsup - 1) = model%supports
+    sup(nsup)%set = 'axis'
+    sup(nsup)%driven = .false.
+    sup(nsup)%nodes = add
+    call move_alloc(sup, model%supports)
+    model%cdof_node = [model%cdof_node, add]
+    model%cdof_comp = [model%cdof_comp, [(1, j = 1, size(add))]]
+    model%cdof_support = [model%cdof_support, [(nsup, j = 1, size(add))]]
+    do j = 1, size(add)
+      model%ncdof = model%ncdof + 1
+      model%v0(1, add(j)) = 0.0_wp
+      model%minv_dof(1, add(j)) = 0.0_wp
+      model%dof_cdof(1, add(j)) = model%ncdof
+    end do
+    model%has_supports = .true.
+  end subroutine hold_axis_nodes
 
   !> Nodes of a node set, or of a surface of that name.
   subroutine resolve_node_set(mesh, name, nodes, where, err)

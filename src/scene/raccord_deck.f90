@@ -19,6 +19,7 @@ module raccord_deck
   use raccord_material, only: KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, MAT_J2, VOL_AUTO, VOL_FULL, VOL_MEAN
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str, lower
+  use raccord_log, only: log_warn
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
   use raccord_deck_scan, only: deck_block_t, scan_deck, join_names
   use raccord_deck_checks, only: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite, &
@@ -157,6 +158,8 @@ contains
     end do
 
     call check_references(path, blocks, scene, body_blk, bc_blk, amp_blk, err)
+    if (err%failed()) return
+    call check_hypotheses(path, blocks, scene, body_blk, err)
     ! A body without its own damping takes the &time damping.
     do k = 1, size(scene%bodies)
       if (scene%bodies(k)%damping < 0.0_wp) scene%bodies(k)%damping = scene%time%damping
@@ -205,6 +208,27 @@ contains
       return
     end do
   end subroutine check_references
+
+  !> Bodies of one scene share the hypothesis family: all axisymmetric or
+  !> all plane (plane strain and plane stress may mix; doc/scene-reference.md).
+  subroutine check_hypotheses(deck, blocks, scene, body_blk, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blocks(:)
+    type(scene_t), intent(in) :: scene
+    integer, intent(in) :: body_blk(:)
+    type(error_t), intent(inout) :: err
+    integer :: i
+    do i = 2, size(scene%bodies)
+      if (scene%bodies(i)%axisymmetric .eqv. scene%bodies(1)%axisymmetric) cycle
+      call bad_value(deck, blocks(body_blk(i)), scene%bodies(i)%name, 'hypothesis', &
+        'the body is ' // trim(merge('axisymmetric', 'plane       ', scene%bodies(i)%axisymmetric)) // &
+        ' but &body ''' // scene%bodies(1)%name // ''' (line ' // str(blocks(body_blk(1))%line) // ') is ' // &
+        trim(merge('axisymmetric', 'plane       ', scene%bodies(1)%axisymmetric)) // &
+        '; the bodies of one scene share the hypothesis', &
+        'write hypothesis = ''axisymmetric'' in every &body, or in none', err)
+      return
+    end do
+  end subroutine check_hypotheses
 
   function amplitude_names(scene) result(s)
     type(scene_t), intent(in) :: scene
@@ -364,9 +388,17 @@ contains
       spec%plane_stress = .false.
     case ('plane_stress')
       spec%plane_stress = .true.
+    case ('axisymmetric')
+      ! x is the radius, y the axis; every integral carries 2 pi r, so a
+      ! thickness has no meaning: ignored, with a warning (scene reference)
+      spec%axisymmetric = .true.
+      if (blk%find('thickness') > 0) call log_warn('read_deck', deck // ':' // str(blk%line) // ': &body ''' // &
+        label // ''': thickness is ignored with hypothesis = ''axisymmetric'' (forces are totals over 2 pi); ' // &
+        'remove the key')
+      thickness = 1.0_wp
     case default
       call bad_value(deck, blk, label, 'hypothesis', 'unknown hypothesis', &
-        'use ''plane_strain'' or ''plane_stress''', err)
+        'use ''plane_strain'', ''plane_stress'' or ''axisymmetric''', err)
       return
     end select
     call read_constitution(deck, blk, label, lower(kinematics), lower(material), lower(volumetric), spec, err)
@@ -448,6 +480,12 @@ contains
       call bad_value(deck, blk, label, 'material', 'material ''' // trim(material) // ''' is a finite-strain law ' // &
         'and kinematics is ''small''', 'write kinematics = ''finite'' beside material = ''' // trim(material) // &
         ''', or material = ''linear_elastic'' for small strain', err)
+    else if (spec%material == MAT_J2 .and. spec%axisymmetric) then
+      call bad_value(deck, blk, label, 'hypothesis', 'J2 plasticity is not built for axisymmetric bodies yet', &
+        'write hypothesis = ''plane_strain'' for an elastoplastic body, or material = ''linear_elastic''', err)
+    else if (spec%kinematics == KIN_FINITE .and. spec%axisymmetric) then
+      call bad_value(deck, blk, label, 'hypothesis', 'finite strain is not built for axisymmetric bodies yet', &
+        'write kinematics = ''small'' for an axisymmetric body, or model it in plane strain', err)
     else if (spec%kinematics == KIN_FINITE .and. spec%plane_stress) then
       call bad_value(deck, blk, label, 'hypothesis', 'finite strain is built for plane strain only', &
         'write hypothesis = ''plane_strain'', or kinematics = ''small'' for a plane-stress body', err)

@@ -59,7 +59,9 @@ contains
           call put(unit, '  young = ' // real_text(b%young), ios, msg)
           call put(unit, '  poisson = ' // real_text(b%poisson), ios, msg)
           call put(unit, '  density = ' // real_text(b%density), ios, msg)
-          if (b%plane_stress) then
+          if (b%axisymmetric) then
+            call put_text(unit, 'hypothesis', 'axisymmetric', ios, msg)
+          else if (b%plane_stress) then
             call put_text(unit, 'hypothesis', 'plane_stress', ios, msg)
           else
             call put_text(unit, 'hypothesis', 'plane_strain', ios, msg)
@@ -72,7 +74,7 @@ contains
             call put(unit, '  yield_stress = ' // real_text(b%yield_stress), ios, msg)
             call put(unit, '  hardening = ' // real_text(b%hardening), ios, msg)
           end if
-          call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
+          if (.not. b%axisymmetric) call put(unit, '  thickness = ' // real_text(b%thickness), ios, msg)
           call put(unit, '  velocity = ' // reals_text(b%velocity), ios, msg)
           call put(unit, '  body_force = ' // reals_text(b%body_force), ios, msg)
           call put(unit, '  damping = ' // real_text(b%damping), ios, msg)

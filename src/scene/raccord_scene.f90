@@ -39,6 +39,9 @@ module raccord_scene
     real(wp) :: poisson = 0.0_wp                    !< nu [-]
     real(wp) :: density = 0.0_wp                    !< rho [mass/length^3]
     logical :: plane_stress = .false.               !< hypothesis = 'plane_stress' (default plane strain)
+    !> hypothesis = 'axisymmetric': x is the radius r >= 0, y the axis;
+    !> forces are totals over 2 pi (doc/theory-axisymmetric.md)
+    logical :: axisymmetric = .false.
     integer :: kinematics = KIN_SMALL               !< kinematics = 'small' | 'finite' (raccord_material)
     integer :: material = MAT_LINEAR                !< material = 'linear_elastic' | 'neo_hooke' | 'svk' | 'j2'
     integer :: volumetric = VOL_AUTO                !< volumetric = 'auto' | 'full' | 'mean_dilatation'
