@@ -22,7 +22,7 @@
 # bodies) beside small strain, not drawn by default (its four runs take
 # about 10 times the CPU of the small-strain ones), or plastic: the paper's
 # test with a J2 layer, loaded and unloaded, against CalculiX *PLASTIC, not
-# drawn by default either (two runs of about 2 min, and CalculiX about
+# drawn by default either (two runs of 5-9 min, and CalculiX about
 # 40 min on the fine mesh). Builds raccord (Release, in $RACCORD_BUILD, default build/)
 # when needed, runs only the decks whose results are missing or older than
 # their deck, two at a time, then draws. Rerunning does only what is missing;

@@ -155,7 +155,20 @@ deck finite_coarse_mortar_p1_slave_block $C "finite strain, coarse, mortar P1, s
 # paper's test with a plastic layer"); H = E2/100.
 SY=700.0
 HMOD=70.0
+# The fine-mesh decks load four times slower than the others (T = 8e-5 s):
+# plastic flow follows the path, and at T = 2e-5 s the explicit run's
+# mid-load overshoot (+3.7 % of the force) leaves extra plastic flow at
+# the contact edge (peak +14 % over CalculiX's static run; +2.3 % at
+# 8e-5 s; doc/reproduction.md). The coarse test deck keeps T = 2e-5 s.
+T=8.0e-5
+T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")
+CYCLE_T=$(awk "BEGIN { for (k = 0; k <= 40; k++) printf \"%s%.6e\", (k ? \", \" : \"\"), k*$T/20 }")
 deck plastic_mortar_p1_slave_block $F "plastic layer, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 plastic
 deck plastic_nts_slave_block       $F "plastic layer, node-to-segment, slave = block top" block_top disc_arc node_to_segment P1 0.0 plastic
-# ... and on the coarse mesh for tests/plastic (test_plastic_paper)
+# ... and on the coarse mesh for tests/plastic (test_plastic_paper), at
+# T = 2e-5 s (4 s in the Check build; at 8e-5 s the coarse run meets a
+# spurious mortar activation on unloading, doc/reproduction.md)
+T=2.0e-5
+T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")
+CYCLE_T=$(awk "BEGIN { for (k = 0; k <= 40; k++) printf \"%s%.6e\", (k ? \", \" : \"\"), k*$T/20 }")
 deck plastic_coarse_mortar_p1_slave_block $C "plastic layer, coarse, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0 plastic

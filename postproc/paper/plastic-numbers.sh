@@ -10,7 +10,7 @@
 #         ccx_pressure.txt, ccx_residual.txt); missing: raccord only
 # DECK    default plastic_mortar_p1_slave_block plastic_nts_slave_block
 # Per deck: the block-bottom reaction at t = T (first history line at or
-# after T = 2e-5 s), the peak normal stress at frame 20 (mortar: lambda_n,
+# after T = t_end/2 of the run's scene), the peak normal stress at frame 20 (mortar: lambda_n,
 # node-to-segment: pressure) and its x, the block-top u_y at x = 0 at the
 # last frame (the dent), the plastic work at T and at the end, the work
 # left in the layer (plastic + internal + kinetic at the end), the least
@@ -24,7 +24,6 @@ runs=$1
 ccx=${2:-}
 if [ "$#" -ge 2 ]; then shift 2; else shift "$#"; fi
 decks=${*:-plastic_mortar_p1_slave_block plastic_nts_slave_block}
-T=2.0e-5
 have_ccx=0
 [ -n "$ccx" ] && [ -s "$ccx/ccx_numbers.txt" ] && have_ccx=1
 if [ "$have_ccx" = 1 ]; then
@@ -36,6 +35,9 @@ for d in $decks; do
   c=$runs/$d/$d.contact1.txt
   [ -s "$h" ] && [ -s "$c" ] || { echo "$d: no complete run in $runs/$d" >&2; exit 1; }
   case "$d" in *mortar*) col=9 ;; *) col=5 ;; esac
+  # T: half the run's t_end (the resolved scene the run wrote)
+  T=$(awk -F= '$1 ~ /^ *t_end *$/ { v = $2; gsub(/[ ,]/, "", v); printf "%.10g", v / 2 }' "$runs/$d/$d.scene.nml" 2>/dev/null || true)
+  [ -n "$T" ] || { echo "$d: no t_end in $runs/$d/$d.scene.nml" >&2; exit 1; }
   awk -v T="$T" '!/^#/ && !done && $1 >= T * (1 - 1e-9) { printf "%s reaction_at_T %.2f contact_force_at_T %.2f plastic_at_T %.3f\n", FILENAME ~ /./ ? "" : "", $12, -$20, $26; done = 1 }
     !/^#/ { if ($7 < m) m = $7; if ($4 > ie) ie = $4; last = $0 }
     END { split(last, a); printf "  end: plastic %.3f internal %.3f kinetic %.4f left %.3f; contact work end %.4f, min %.4f (%.2e of the peak internal %.2f)\n", a[26], a[4], a[3], a[26] + a[4] + a[3], a[7], m, m / ie, ie }' "$h" | sed "s/^ reaction/$d: reaction/"
