@@ -52,3 +52,13 @@ deck finite_mortar $M finite mortar          "finite strain, mortar P1"
 deck finite_nts    $M finite node_to_segment "finite strain, node-to-segment"
 deck small_mortar  $M small  mortar          "small strain, mortar P1"
 deck small_nts     $M small  node_to_segment "small strain, node-to-segment"
+# The comparison scene of tools/calculix/taylor-ccx.sh: no wall, the face
+# held at y = g (a rigid frictionless wall from t = 0, exact while the face
+# stays in contact; the face nodes start at rest, the rest of the bar at
+# 100 m/s). The wall body stays in the mesh, untouched.
+sed -e "s/^! Plane-strain Taylor test: .*/! Plane-strain Taylor test: finite strain, the face held at y = g (no contact)./" \
+    -e "s/^  title = .*/  title = 'Taylor, plane strain: finite strain, face held'/" \
+    -e "/^&boundary set = 'bar_axis'/a\\
+\&boundary set = 'bar_face', type = 'fixed', components = 'y' /" \
+    -e '/^&contact_pair/,$d' finite_mortar.nml > finite_fixed_face.nml
+echo finite_fixed_face.nml
