@@ -42,6 +42,10 @@ program test_plastic_impact
   end type ccx_ref_t
   type(ccx_ref_t), parameter :: ccx_c3d8r = ccx_ref_t([9.608659_wp, 9.346803_wp], 9.21511_wp, 1.70202_wp, 1.10600_wp)
   type(ccx_ref_t), parameter :: ccx_c3d8 = ccx_ref_t([9.609128_wp, 9.341492_wp], 9.23924_wp, 1.48876_wp, 0.64486_wp)
+  !> C3D8R on taylor_q4_fine.msh (`CCX_ELEMENT=C3D8R sh tools/calculix/taylor-ccx.sh OUT
+  !> input/verification/taylor/taylor_q4_fine.msh`, 207 s)
+  type(ccx_ref_t), parameter :: ccx_c3d8r_fine = ccx_ref_t([9.608864_wp, 9.345235_wp], 9.21114_wp, 1.70811_wp, &
+    1.24378_wp)
 
   !> What a run leaves for the checks.
   type :: taylor_t
@@ -66,6 +70,14 @@ program test_plastic_impact
   type(taylor_t) :: finite_mortar_run
   logical :: have_finite_mortar = .false.
 
+  character(len=16) :: arg
+
+  ! `test_plastic_impact fine`: the slow mesh study (CTest plastic_impact_fine)
+  call get_command_argument(1, arg)
+  if (arg == 'fine') then
+    call run_tests('plastic_impact', [new_test('fine mesh (h/2): convergence and CalculiX C3D8R', test_fine)])
+    stop
+  end if
   call run_tests('plastic_impact', [ &
     new_test('finite strain, mortar and node-to-segment: rebound, energy, shape', test_finite), &
     new_test('small strain, mortar and node-to-segment: rebound, energy, shape', test_small), &
@@ -284,8 +296,8 @@ contains
     if (allocated(failure)) return
     call check_run(failure, 'finite, mortar', m)
     call check_run(failure, 'finite, node-to-segment', s)
-    ! measured: 0.03 % (shortening), 0.01 % (mushroom), 0.03 % (work), 1 % (strain)
-    call check_agree(failure, 'finite, mortar and node-to-segment', m, s, 5.0e-3_wp, 3.0e-2_wp)
+    ! measured: 0.36 % (shortening), 0.03 % (mushroom), 0.03 % (work), 1 % (strain)
+    call check_agree(failure, 'finite, mortar and node-to-segment', m, s, 1.0e-2_wp, 3.0e-2_wp)
   end subroutine test_finite
 
   !> Small strain, the comparison: the same checks; the shape is printed
@@ -298,7 +310,8 @@ contains
     if (allocated(failure)) return
     call check_run(failure, 'small, mortar', m)
     call check_run(failure, 'small, node-to-segment', s)
-    call check_agree(failure, 'small, mortar and node-to-segment', m, s, 5.0e-3_wp, 3.0e-2_wp)
+    ! measured: 0.12 %, 0.01 %, 0.03 %, 0.3 %
+    call check_agree(failure, 'small, mortar and node-to-segment', m, s, 1.0e-2_wp, 3.0e-2_wp)
   end subroutine test_small
 
   !> The balance error is the scheme's O(dt^2): half the step, a quarter of it.
@@ -317,7 +330,8 @@ contains
       str(r1%balance/r2%balance, 3)
     call check(failure, r1%balance > 3.0_wp*r2%balance, 'the balance error falls > 3x with dt/2: ' // &
       str(r1%balance) // ' -> ' // str(r2%balance))
-    call check_agree(failure, 'finite, dt and dt/2', r1, r2, 5.0e-3_wp, 3.0e-2_wp)
+    ! measured: 0.3 %, 0.1 %, 0.01 %, 0.6 %
+    call check_agree(failure, 'finite, dt and dt/2', r1, r2, 1.0e-2_wp, 3.0e-2_wp)
   end subroutine test_step
   !> The same bar with its face held at y = 0 (finite_fixed_face: the
   !> frictionless rigid wall of CalculiX's model, exact while the face is
@@ -400,4 +414,42 @@ contains
       wall%width_mean - held%width_mean < 0.1_wp*(held%width_mean - a), what // ': the lip that lifts off ' // &
       'the wall spreads the mushroom by less than 10 %')
   end subroutine compare_wall
+  !> The slow study: taylor_q4_fine.msh (h = 0.0625, 16 x 160 in the bar),
+  !> with the wall and with the face held, against the coarse mesh and
+  !> CalculiX C3D8R on the same fine mesh.
+  subroutine test_fine(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(taylor_t) :: m, fm, mc, fmc
+    character(len=48), parameter :: old(1) = [character(len=48) :: "taylor_q4.msh'"]
+    character(len=48), parameter :: new(1) = [character(len=48) :: "taylor_q4_fine.msh'"]
+    call run_taylor(failure, 'finite_mortar', mc)
+    call run_taylor(failure, 'finite_fixed_face', fmc)
+    call run_taylor(failure, 'finite_mortar_fine', m, derive_deck('finite_mortar', 'finite_mortar_fine', old, new))
+    call run_taylor(failure, 'finite_fixed_face_fine', fm, derive_deck('finite_fixed_face', 'finite_fixed_face_fine', &
+      old, new))
+    if (allocated(failure)) return
+    call check_run(failure, 'finite, mortar, fine', m)
+    print '(a)', '  h -> h/2, wall: shortening ' // str(bar_l - mc%length_mean, 4) // ' -> ' // &
+      str(bar_l - m%length_mean, 4) // ', mushroom ' // str(mc%width_mean - a, 4) // ' -> ' // &
+      str(m%width_mean - a, 4) // ', face strain ' // str(mc%ebar_face, 4) // ' -> ' // str(m%ebar_face, 4) // &
+      ', plastic work ' // str(mc%plastic, 5) // ' -> ' // str(m%plastic, 5)
+    print '(a)', '  h -> h/2, face held: shortening ' // str(bar_l - fmc%length_mean, 4) // ' -> ' // &
+      str(bar_l - fm%length_mean, 4) // ', mushroom ' // str(fmc%width_mean - a, 4) // ' -> ' // &
+      str(fm%width_mean - a, 4) // ', face strain (element mean) ' // str(fmc%ebar_face_el, 4) // ' -> ' // &
+      str(fm%ebar_face_el, 4)
+    ! the shape has converged (measured 0.1-0.3 % shortening, 0.4-1.2 %
+    ! mushroom); the strain of the corner element has not (+7 %, +9 %: the
+    ! corner is singular, a finer element sees more of it)
+    call check(failure, abs(m%length_mean - mc%length_mean) < 1.0e-2_wp*(bar_l - m%length_mean) .and. &
+      abs(fm%length_mean - fmc%length_mean) < 1.0e-2_wp*(bar_l - fm%length_mean), 'shortening within 1 % on h/2')
+    call check(failure, abs(m%width_mean - mc%width_mean) < 3.0e-2_wp*(m%width_mean - a) .and. &
+      abs(fm%width_mean - fmc%width_mean) < 3.0e-2_wp*(fm%width_mean - a), 'mushroom within 3 % on h/2')
+    ! the node-level inelastic closure is an O(h) loss: measured 3.68 -> 1.91
+    call check(failure, m%contact < 0.6_wp*mc%contact, 'contact loss falls with h: ' // str(mc%contact) // &
+      ' -> ' // str(m%contact))
+    ! on the same fine mesh: measured 0.2 %, 0.3 % (shortening), 0.4 %
+    ! (mushroom), 5 % (strain, 8 % on the coarse mesh)
+    call compare_ccx(failure, 'fine, mean dilatation, face held, against C3D8R', fm, ccx_c3d8r_fine, fm%ebar_face_el, &
+      [5.0e-3_wp, 1.0e-2_wp, 3.0e-2_wp, 0.10_wp])
+  end subroutine test_fine
 end program test_plastic_impact
