@@ -8,8 +8,8 @@ deck() {  # NAME MESH KINEMATICS METHOD TITLE
 ! Half of a copper-like bar 2 x 10 mm (x >= 0, symmetry line x = 0 held in
 ! x) moving at 100 m/s (1.0e5 mm/s) in -y onto a wall 0.01 mm below it.
 ! Bar: E = 117000 MPa, nu = 0.35, rho = 8.93e-9 t/mm^3, j2 with
-! sigma_y0 = 400 MPa, H = 100 MPa (the copper of Wilkins & Guinan's Taylor
-! test, used in plane strain here). Wall: the same nu, E and rho both 100
+! sigma_y0 = 400 MPa, H = 100 MPa (the constants usually given to the
+! copper of the Taylor bar benchmark, used in plane strain here). Wall: the same nu, E and rho both 100
 ! times the bar's (the same wave speed, so the same stable step; 100 times
 ! the impedance, so its face moves about 1 % of the bar's speed), bottom
 ! held: "rigid-ish". Frictionless contact. Initial kinetic energy 446.49
@@ -58,6 +58,8 @@ deck small_nts     $M small  node_to_segment "small strain, node-to-segment"
 # 100 m/s). The wall body stays in the mesh, untouched.
 sed -e "s/^! Plane-strain Taylor test: .*/! Plane-strain Taylor test: finite strain, the face held at y = g (no contact)./" \
     -e "s/^  title = .*/  title = 'Taylor, plane strain: finite strain, face held'/" \
+    -e "s/ in -y onto a wall 0.01 mm below it\./ in -y; its face (y = 0.01) held in y from t = 0./" \
+    -e "s/ Frictionless contact\./ The wall is not touched (no contact)./" \
     -e "/^&boundary set = 'bar_axis'/a\\
 \&boundary set = 'bar_face', type = 'fixed', components = 'y' /" \
     -e '/^&contact_pair/,$d' finite_mortar.nml > finite_fixed_face.nml
