@@ -216,12 +216,12 @@ contains
         do e = 1, blk%nel
           ic = (e - 1)/chunk_len + 1
           il = e - (ic - 1)*chunk_len
-          eb = maxval(pl%old(il, h_ebar, 1:blk%ngp, ic))
+          eb = maxval(pl%h(il, h_ebar, 1:blk%ngp, ic))
           res%ebar_max = max(res%ebar_max, eb)
           ! the face row: an element with a node on the face
           if (minval(run%mesh%x(2, blk%conn(1:4, e))) < 1.5_wp*gap) then
             res%ebar_face = max(res%ebar_face, eb)
-            res%ebar_face_el = max(res%ebar_face_el, sum(pl%old(il, h_ebar, 1:blk%ngp, ic))/real(blk%ngp, wp))
+            res%ebar_face_el = max(res%ebar_face_el, sum(pl%h(il, h_ebar, 1:blk%ngp, ic))/real(blk%ngp, wp))
           end if
         end do
       end associate
