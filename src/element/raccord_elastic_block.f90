@@ -58,7 +58,8 @@ module raccord_elastic_block
     VOL_FULL, VOL_MEAN, MAT_J2, material_name
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
-  use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
+  use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8, &
+    kernel_j2_axi_q4, kernel_j2_axi_q8
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
   implicit none
   private
@@ -86,6 +87,8 @@ module raccord_elastic_block
   !> J2 plasticity (small or finite strain, Q4 or Q8).
   integer, parameter :: KERN_Q4 = 1, KERN_Q8 = 2, KERN_FINITE_Q4 = 3, KERN_FINITE_Q8 = 4
   integer, parameter :: KERN_J2_SMALL_Q4 = 5, KERN_J2_SMALL_Q8 = 6, KERN_J2_FINITE_Q4 = 7, KERN_J2_FINITE_Q8 = 8
+  !> J2 plasticity on axisymmetric blocks (small strain, Q4 and Q8)
+  integer, parameter :: KERN_J2_AXI_Q4 = 9, KERN_J2_AXI_Q8 = 10
   !> small-strain axisymmetric Q4 and Q8 (make_axisymmetric, raccord_axi_kernel)
   integer, parameter :: KERN_AXI_Q4 = 21, KERN_AXI_Q8 = 22
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
@@ -743,6 +746,16 @@ contains
             call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
               blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
               ue, fe, sgp, act, en, dis, jm, jel, w2)
+          case (KERN_J2_AXI_Q4)
+            call kernel_j2_axi_q4(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
+              blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis)
+            jm = 1.0_wp
+            jel = 0
+          case (KERN_J2_AXI_Q8)
+            call kernel_j2_axi_q8(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
+              blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis)
+            jm = 1.0_wp
+            jel = 0
           case (KERN_AXI_Q4)
             call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           case (KERN_AXI_Q8)
@@ -915,11 +928,11 @@ contains
       if (strain) what = small_strain
     end if
     if (blk%kinematics == KIN_FINITE) what = what + 2
-    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain) then
+    if (blk%axisymmetric) what = what + 4
+    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain) then
       if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
       what = j2_stress
     end if
-    if (blk%axisymmetric) what = what + 4
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, s, wsum, what, plastic) &
     !$omp   private(col, k, e, e0, e1)

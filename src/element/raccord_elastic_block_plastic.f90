@@ -32,12 +32,39 @@ contains
     blk%density = density
     blk%j2 = j2
     blk%moduli = make_moduli(blk%young, blk%poisson)
-    if (kinematics == KIN_FINITE) then
+    if (blk%axisymmetric) then
+      ! on the axisymmetric block's data (make_axisymmetric, called before):
+      ! H = sqrt(c) J^-1, the hoop factor, and c = w detJ 2 pi r_g here
+      ! in chunk layout with V_e = sum_g c
+      if (kinematics == KIN_FINITE) then
+        call raise_error(err, EXIT_INPUT, where // 'finite strain is not built for axisymmetric bodies')
+        return
+      end if
+      blk%kernel = merge(KERN_J2_AXI_Q4, KERN_J2_AXI_Q8, blk%etype == ELEM_Q4)
+      call axi_weights(blk)
+    else if (kinematics == KIN_FINITE) then
       blk%kernel = merge(KERN_J2_FINITE_Q4, KERN_J2_FINITE_Q8, blk%etype == ELEM_Q4)
+      call init_reference_data(blk, x, err)
     else
       blk%kernel = merge(KERN_J2_SMALL_Q4, KERN_J2_SMALL_Q8, blk%etype == ELEM_Q4)
+      call init_reference_data(blk, x, err)
     end if
-    call init_reference_data(blk, x, err)
+  contains
+    !> c and V_e of an axisymmetric block in the kernels' chunk layout
+    !> (padding lanes: c = 1, never scattered).
+    subroutine axi_weights(b)
+      type(elastic_block_t), intent(inout) :: b
+      integer :: e, ic, il
+      allocate(b%cw(chunk_len, b%ngp, b%nchunk), b%vol0(chunk_len, b%nchunk))
+      b%cw = 1.0_wp
+      b%vol0 = real(b%ngp, wp)
+      do e = 1, b%nel
+        ic = (e - 1)/chunk_len + 1
+        il = e - (ic - 1)*chunk_len
+        b%cw(il, :, ic) = b%c(:, e)
+        b%vol0(il, ic) = sum(b%c(:, e))
+      end do
+    end subroutine axi_weights
   end procedure make_plastic
 
   !> A virgin block: eps_p = 0 or Cp^-1 = I, ebar = 0 at every point.
@@ -114,6 +141,12 @@ contains
         call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
           blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
           ue, fe, sgp, act, en, dis, jm, jel, w2)
+      case (KERN_J2_AXI_Q4)
+        call kernel_j2_axi_q4(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
+          blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sgp, act, en, dis)
+      case (KERN_J2_AXI_Q8)
+        call kernel_j2_axi_q8(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
+          blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sgp, act, en, dis)
       end select
       ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)
       call extrapolate(reshape(sgp(:, :, 1:ngp), [chunk_len, 4, ngp]))

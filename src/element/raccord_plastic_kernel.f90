@@ -36,6 +36,7 @@ module raccord_plastic_kernel
   private
 
   public :: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
+  public :: kernel_j2_axi_q4, kernel_j2_axi_q8
 
   integer, parameter :: max_nen = 8, max_gp = 9
 
@@ -78,4 +79,23 @@ contains
     logical, parameter :: split = .false., finite = .true.
     include 'raccord_plastic_kernel_body.inc'
   end subroutine kernel_j2_finite_q8
+  !> Axisymmetric J2 (small strain), on the axisymmetric blocks' data
+  !> (raccord_axi_kernel, doc/theory-axisymmetric.md): H = sqrt(c) J^-1 and
+  !> the hoop factor sqrt(c)/r_g per Gauss point, c = w detJ 2 pi r_g (cw),
+  !> V_e = sum_g c (vol0). The strain (rr, zz, rz, tt), eps_tt = u_r/r, is
+  !> the plane-strain return's (xx, yy, xy, zz): the out-of-plane component
+  !> is the hoop strain instead of 0; B-bar takes the element's mean of
+  !> eps_rr + eps_zz + eps_tt (J-1). Forces f_a += c B^T sigma as the
+  !> axisymmetric Hooke kernel; sg = Cauchy (rr, zz, rz, tt).
+  pure subroutine kernel_j2_axi_q4(nc, m, j2, mean, nref, dn, h, hoop, cw, vol0, hist, ue, fe, sg, act, &
+      energy, dissip)
+    integer, parameter :: nen = 4, ngp = 4
+    include 'raccord_plastic_axi_body.inc'
+  end subroutine kernel_j2_axi_q4
+
+  pure subroutine kernel_j2_axi_q8(nc, m, j2, mean, nref, dn, h, hoop, cw, vol0, hist, ue, fe, sg, act, &
+      energy, dissip)
+    integer, parameter :: nen = 8, ngp = 9
+    include 'raccord_plastic_axi_body.inc'
+  end subroutine kernel_j2_axi_q8
 end module raccord_plastic_kernel

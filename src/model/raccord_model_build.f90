@@ -167,10 +167,11 @@ contains
             end if
           end if
           if (spec%material == MAT_J2) then
-            ! The body's kernel: J2 plasticity, small or finite strain, with
-            ! mean dilatation (B-bar) unless the deck says otherwise.
+            ! The body's kernel: J2 plasticity, small or finite strain; Q4
+            ! with mean dilatation (B-bar), Q8 fully integrated, unless the
+            ! deck says otherwise (doc/theory-plasticity.md, section 4).
             vol = spec%volumetric
-            if (vol == VOL_AUTO) vol = VOL_MEAN
+            if (vol == VOL_AUTO) vol = merge(VOL_MEAN, VOL_FULL, et == ELEM_Q4)
             call make_plastic(body%blocks(nblk), mesh%x, spec%kinematics, j2_t(spec%yield_stress, spec%hardening), &
               vol, spec%density, err)
             if (err%failed()) then

@@ -480,9 +480,6 @@ contains
       call bad_value(deck, blk, label, 'material', 'material ''' // trim(material) // ''' is a finite-strain law ' // &
         'and kinematics is ''small''', 'write kinematics = ''finite'' beside material = ''' // trim(material) // &
         ''', or material = ''linear_elastic'' for small strain', err)
-    else if (spec%material == MAT_J2 .and. spec%axisymmetric) then
-      call bad_value(deck, blk, label, 'hypothesis', 'J2 plasticity is not built for axisymmetric bodies yet', &
-        'write hypothesis = ''plane_strain'' for an elastoplastic body, or material = ''linear_elastic''', err)
     else if (spec%kinematics == KIN_FINITE .and. spec%axisymmetric) then
       call bad_value(deck, blk, label, 'hypothesis', 'finite strain is not built for axisymmetric bodies yet', &
         'write kinematics = ''small'' for an axisymmetric body, or model it in plane strain', err)

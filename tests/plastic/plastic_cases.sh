@@ -86,8 +86,8 @@ refuse)
   refused j2_softening "material = 'j2', yield_stress = 240.0, hardening = -100.0" "hardening modulus must be >= 0"
   refused j2_plane_stress "material = 'j2', yield_stress = 240.0, hypothesis = 'plane_stress'" \
     "plane strain only" "hypothesis = 'plane_strain'"
-  refused j2_axisymmetric "material = 'j2', yield_stress = 240.0, hypothesis = 'axisymmetric'" \
-    "not built for axisymmetric bodies" "hypothesis = 'plane_strain'"
+  refused j2_axisymmetric_finite "kinematics = 'finite', material = 'j2', yield_stress = 240.0, hypothesis = 'axisymmetric'" \
+    "not built for axisymmetric bodies"
   refused j2_bad_volumetric "material = 'j2', yield_stress = 240.0, volumetric = 'reduced'" \
     "unknown volumetric treatment 'reduced'"
   ;;
