@@ -401,7 +401,7 @@ contains
     xi = 0.5_wp*(s0 + s1)
     call segment_point(nen, xs, xi, ps, ts)
     call normal_field(nen, nn, xi, n, dn)
-    n = n/max(norm2(n), tiny(1.0_wp))
+    n = n/max(sqrt(n(1)**2 + n(2)**2), tiny(1.0_wp))
     eta = intersect_ray(nenm, xm, ps, n)
     call segment_point(nenm, xm, eta, pm, tm)
     if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) return
@@ -433,10 +433,15 @@ contains
         ! Slave point, tangent and normal field from one evaluation of the
         ! slave shape functions (segment_point and normal_field in one).
         call shape_line(nen, xi, ns, dns)
-        ps = matmul(xs(:, 1:nen), ns(1:nen))
-        ts = matmul(xs(:, 1:nen), dns(1:nen))
-        n = matmul(nn(:, 1:nen), ns(1:nen))
-        dg = norm2(ts)*wgt                       ! dGamma = |dx_s/dxi| dxi
+        ps = xs(:, 1)*ns(1) + xs(:, 2)*ns(2)
+        ts = xs(:, 1)*dns(1) + xs(:, 2)*dns(2)
+        n = nn(:, 1)*ns(1) + nn(:, 2)*ns(2)
+        if (nen == 3) then
+          ps = ps + xs(:, 3)*ns(3)
+          ts = ts + xs(:, 3)*dns(3)
+          n = n + nn(:, 3)*ns(3)
+        end if
+        dg = sqrt(ts(1)**2 + ts(2)**2)*wgt       ! dGamma = |dx_s/dxi| dxi
         ! axisymmetric: dGamma = 2 pi r |dx_s/dxi| dxi (method brief 9.4)
         if (slave%axisymmetric) dg = dg*(2.0_wp*pi*ps(1))
         eta = intersect_ray(nenm, xm, ps, n)
@@ -562,7 +567,7 @@ contains
         if (abs(xi) >= 1.0_wp - XI_COVER) cycle
         call segment_point(nen, xs, xi, ps, ts)
         call normal_field(nen, nn, xi, n, dn)
-        n = n/max(norm2(n), tiny(1.0_wp))
+        n = n/max(sqrt(n(1)**2 + n(2)**2), tiny(1.0_wp))
         g = dot_product(pc - ps, n)
         if (abs(g) >= best) cycle
         if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) cycle
@@ -620,7 +625,7 @@ contains
         if (slave%axisymmetric) then
           if (x(1, slave%node(c)) == 0.0_wp) w%nrm(1, c) = 0.0_wp
         end if
-        w%nrm(:, c) = w%nrm(:, c)/max(norm2(w%nrm(:, c)), tiny(1.0_wp))
+        w%nrm(:, c) = w%nrm(:, c)/max(sqrt(w%nrm(1, c)**2 + w%nrm(2, c)**2), tiny(1.0_wp))
       end do
     end do
   end subroutine slave_normals

@@ -42,7 +42,7 @@ contains
     real(wp), intent(in) :: xs(2, 3), xi
     real(wp) :: n(2), p(2), t(2)
     call segment_point(nen, xs, xi, p, t)
-    n = [t(2), -t(1)]/max(norm2(t), tiny(1.0_wp))
+    n = [t(2), -t(1)]/max(sqrt(t(1)**2 + t(2)**2), tiny(1.0_wp))
   end function outward_normal
 
   !> Slave normal field at xi, interpolated from the nodal normals nn(2, nen)
@@ -54,8 +54,12 @@ contains
     real(wp), intent(out) :: n(2), dn(2)
     real(wp) :: sh(3), dsh(3)
     call shape_line(nen, xi, sh, dsh)
-    n = matmul(nn(:, 1:nen), sh(1:nen))
-    dn = matmul(nn(:, 1:nen), dsh(1:nen))
+    n = nn(:, 1)*sh(1) + nn(:, 2)*sh(2)
+    dn = nn(:, 1)*dsh(1) + nn(:, 2)*dsh(2)
+    if (nen == 3) then
+      n = n + nn(:, 3)*sh(3)
+      dn = dn + nn(:, 3)*dsh(3)
+    end if
   end subroutine normal_field
 
   !> Slave parameter xi in [-1, 1] of the point p seen along the slave

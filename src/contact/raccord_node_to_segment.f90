@@ -86,9 +86,9 @@ contains
           ! vertex as the closest point; the neighbour gives the normal too.
           s = max(-1.0_wp, min(1.0_wp, s))
           call segment_point(nen, xs, s, foot, tang)
-          tang = tang/norm2(tang)
+          tang = tang/sqrt(tang(1)**2 + tang(2)**2)
         end if
-        dist = norm2(xp - foot)
+        dist = sqrt((xp(1) - foot(1))**2 + (xp(2) - foot(2))**2)
         if (dist < best_dist) then
           best_dist = dist
           best = k
@@ -145,11 +145,11 @@ contains
       end do
       s_out = project_along_field(nen, xk, nn, xp)
       call normal_field(nen, nn, s_out, normal, dnf)
-      normal = normal/max(norm2(normal), tiny(1.0_wp))
+      normal = normal/max(sqrt(normal(1)**2 + normal(2)**2), tiny(1.0_wp))
       ! A clipped end is a root only if the field there points at the node.
       if (abs(s_out) >= 1.0_wp) then
         call segment_point(nen, xk, s_out, fx, ft)
-        if (abs(cross2(xp - fx, normal)) > 1.0e-9_wp*max(norm2(xp - fx), norm2(ft))) &
+        if (abs(cross2(xp - fx, normal)) > 1.0e-9_wp*max(norm2(xp - fx), sqrt(ft(1)**2 + ft(2)**2))) &
           s_out = sign(1.0_wp + 1.0e-6_wp, s_out)
       end if
     end subroutine field_foot
@@ -193,7 +193,7 @@ contains
           if (master%axisymmetric) then
             if (x(1, master%seg(a, k)) == 0.0_wp) nv(1) = 0.0_wp
           end if
-          nv = nv/max(norm2(nv), tiny(1.0_wp))
+          nv = nv/max(sqrt(nv(1)**2 + nv(2)**2), tiny(1.0_wp))
         end associate
       end do
     end do
@@ -255,9 +255,9 @@ contains
           associate (pos => chain_position(surf, k, a, stride))
             if (surf%axisymmetric) then
               ! the area of the ring the node carries: 2 pi int N_a r ds
-              trib(pos) = trib(pos) + sh(a)*norm2(dx)*gw(g)*(2.0_wp*pi*xx(1))
+              trib(pos) = trib(pos) + sh(a)*sqrt(dx(1)**2 + dx(2)**2)*gw(g)*(2.0_wp*pi*xx(1))
             else
-              trib(pos) = trib(pos) + sh(a)*norm2(dx)*gw(g)
+              trib(pos) = trib(pos) + sh(a)*sqrt(dx(1)**2 + dx(2)**2)*gw(g)
             end if
           end associate
         end do

@@ -20,8 +20,14 @@ contains
     real(wp), intent(out), optional :: d2xds2(2)
     real(wp) :: n(3), dn(3)
     call shape_line(nen, s, n, dn)
-    x = matmul(xs(:, 1:nen), n(1:nen))
-    dxds = matmul(xs(:, 1:nen), dn(1:nen))
+    ! xs N and xs dN written out (matmul on a 2 x nen section is a library
+    ! call here, a tenth of the mortar matching).
+    x = xs(:, 1)*n(1) + xs(:, 2)*n(2)
+    dxds = xs(:, 1)*dn(1) + xs(:, 2)*dn(2)
+    if (nen == 3) then
+      x = x + xs(:, 3)*n(3)
+      dxds = dxds + xs(:, 3)*dn(3)
+    end if
     if (present(d2xds2)) then
       if (nen == 3) then
         ! N_start = s(s-1)/2, N_end = s(s+1)/2, N_mid = 1 - s^2: second derivatives 1, 1, -2.
@@ -48,7 +54,7 @@ contains
     s = -1.0_wp + 2.0_wp*dot_product(p - xs(:, 1), chord)/max(dot_product(chord, chord), tiny(1.0_wp))
     if (nen == 3) then
       call segment_point(nen, xs, s, foot, dx)
-      dist = norm2(foot - p)
+      dist = sqrt((foot(1) - p(1))**2 + (foot(2) - p(2))**2)
       do it = 1, 30
         call segment_point(nen, xs, s, foot, dx, d2x)
         f = dot_product(foot - p, dx)
@@ -59,7 +65,7 @@ contains
         do
           snew = s + ds
           call segment_point(nen, xs, snew, xn, dxn)
-          dnew = norm2(xn - p)
+          dnew = sqrt((xn(1) - p(1))**2 + (xn(2) - p(2))**2)
           if (dnew <= dist .or. half >= 20) exit
           ds = 0.5_wp*ds
           half = half + 1
@@ -71,7 +77,7 @@ contains
       end do
     end if
     call segment_point(nen, xs, s, foot, dx)
-    tangent = dx/max(norm2(dx), tiny(1.0_wp))
+    tangent = dx/max(sqrt(dx(1)**2 + dx(2)**2), tiny(1.0_wp))
   end subroutine project_on_segment
 
   !> v turned by +90 degrees.
