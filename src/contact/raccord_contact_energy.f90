@@ -70,8 +70,7 @@ contains
         str(state%time) // ' (step ' // str(state%step) // '), ' // str(frac, 3) // ' of the energy scale ' // &
         str(state%energy%scale, 3) // ' (threshold ' // str(CONTACT_ENERGY_WARN, 2) // '). The energy ' // &
         'balance still closes: this energy is in the kinetic and internal energy and is not physical. ' // &
-        'Refine the surfaces, make the finer or softer surface the slave, or use method = ''mortar'' ' // &
-        '(doc/theory-contact.md, section 6).')
+        'Refine the surfaces or make the finer or softer surface the slave (doc/theory-contact.md, section 6).')
     end if
   end subroutine watch_contact_energy
 
