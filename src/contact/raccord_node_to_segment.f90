@@ -34,11 +34,11 @@ module raccord_node_to_segment
 
   public :: build_node_to_segment, tributary_lengths, smooth_foot
 
-  !> Turning angle (radians, as a sine) below which a piece of master is
-  !> read as straight (smooth_foot): a node crossing such a vertex can be
-  !> given at most this fraction of the work of its contact force over the
-  !> step's sliding, and flat masters keep the segment's own weights.
-  real(wp), parameter :: STRAIGHT_TURN = 1.0e-3_wp
+  !> Turning angle (radians, as a sine) below which the end segment of an
+  !> open master chain is read as straight (smooth_foot): there the cubic
+  !> weights do not add up to the segment's consistent loads, and a flat
+  !> master's end must keep the plain row for the patch test.
+  real(wp), parameter :: END_TURN = 1.0e-3_wp
 
 contains
 
@@ -187,14 +187,13 @@ contains
   !> does no work) and follows rigid motions exactly. At an end of an open
   !> chain the missing node is the reflection of the other one about the
   !> end (the end tangent is along the end segment). The closest point is
-  !> sought on segment k and its two neighbours. Where the chords to the
-  !> neighbours turn by less than STRAIGHT_TURN from the segment, the piece
-  !> is read as the segment itself, with its normal and its own weights
-  !> 1 - t and t: a flat master keeps the
-  !> plain node-to-segment row, whose force distribution passes the patch
-  !> test on non-matching meshes with the fine side as slave (the cubic
-  !> weights reach the neighbours' nodes, and at an open end they do not
-  !> add up to the segment's consistent loads). Returns the four nodes,
+  !> sought on segment k and its two neighbours. On the end segment of an
+  !> open chain, where the chords turn by less than END_TURN/10 from the
+  !> segment, the piece is read as the segment itself, with its normal and
+  !> its own weights 1 - t and t (blended smoothly into the cubic up to
+  !> END_TURN): there the cubic weights do not add up to the segment's
+  !> consistent loads, and the plain row passes the patch test on
+  !> non-matching meshes with the fine side as slave. Returns the four nodes,
   !> their weights (0 for an unused one) and the outward unit normal, on
   !> the positions x (t(n)).
   subroutine smooth_foot(master, x, k, xp, nodes, w, normal)
@@ -249,7 +248,7 @@ contains
     integer, intent(in) :: nd(4)
     real(wp), intent(in) :: xp(2)
     real(wp), intent(out) :: d, w(4), tg(2)
-    real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), d2w(4)
+    real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), d2w(4), phi, turn
     integer :: it
     xa = x(:, nd(2))
     xb = x(:, nd(3))
@@ -266,6 +265,19 @@ contains
     len = norm2(xb - xa)
     ba = 0.5_wp
     bb = 0.5_wp
+    ! The end segment of an open chain: how much the piece turns (the sines
+    ! of the angles of the chords to P and N with the segment). Below
+    ! END_TURN/10 it is the segment itself (phi = 0: its weights 1 - t, t
+    ! and its normal), above END_TURN the cubic (phi = 1), in between a
+    ! smooth blend of the two curves, so that the row does not jump when a
+    ! bending master crosses the threshold. Elsewhere always the cubic.
+    phi = 1.0_wp
+    if (nd(1) == 0 .or. nd(4) == 0) then
+      turn = max(abs(cross2(xb - xq, xb - xa))/max(norm2(xb - xq)*len, tiny(1.0_wp)), &
+        abs(cross2(xn - xa, xb - xa))/max(norm2(xn - xa)*len, tiny(1.0_wp)))
+      phi = max(0.0_wp, min(1.0_wp, (turn - 0.1_wp*END_TURN)/(0.9_wp*END_TURN)))
+      phi = phi*phi*(3.0_wp - 2.0_wp*phi)
+    end if
     ! Start from the projection on the chord.
     t = dot_product(xp - xa, xb - xa)/max(len*len, tiny(1.0_wp))
     t = max(0.0_wp, min(1.0_wp, t))
@@ -303,16 +315,6 @@ contains
       w(2) = w(2) - w(4)
       w(4) = 0.0_wp
     end if
-    ! A straight piece of master (the chords to P and N turn by less than
-    ! STRAIGHT_TURN from the segment): the segment itself, its normal and
-    ! linear weights.
-    if (abs(cross2(xb - xq, xb - xa)) <= STRAIGHT_TURN*norm2(xb - xq)*len .and. &
-        abs(cross2(xn - xa, xb - xa)) <= STRAIGHT_TURN*norm2(xn - xa)*len) then
-      t = max(0.0_wp, min(1.0_wp, dot_product(xp - xa, xb - xa)/max(len*len, tiny(1.0_wp))))
-      w = [0.0_wp, 1.0_wp - t, t, 0.0_wp]
-      d = norm2(xa + t*(xb - xa) - xp)
-      tg = xb - xa
-    end if
   contains
     !> Node weights of C(t), C'(t), C''(t) (Hermite basis with the tangents above).
     subroutine weights(tt)
@@ -333,6 +335,10 @@ contains
       h01 = -h00
       h11 = 6.0_wp*tt - 2.0_wp
       d2w = [-ba*h10, h00 - bb*h11, h01 + ba*h10, bb*h11]
+      ! Blend with the segment: C = (1 - phi) chord + phi cubic.
+      w = phi*w + (1.0_wp - phi)*[0.0_wp, 1.0_wp - tt, tt, 0.0_wp]
+      dw = phi*dw + (1.0_wp - phi)*[0.0_wp, -1.0_wp, 1.0_wp, 0.0_wp]
+      d2w = phi*d2w
     end subroutine weights
   end subroutine span_closest
 
