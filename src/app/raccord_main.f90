@@ -32,6 +32,7 @@ program raccord_main
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
+  use raccord_contact_energy, only: contact_energy_watch_t, watch_contact_energy, report_contact_energy
   use raccord_run_report, only: report_plan, report_summary, run_stem
   use raccord_output, only: output_t, output_mark_t, open_outputs, write_due_outputs, close_outputs, &
     mark_outputs, suspend_outputs, resume_outputs, history_width
@@ -69,6 +70,7 @@ program raccord_main
   type(output_t) :: out
   type(run_control_t) :: control
   type(contact_pair_t), allocatable :: pairs(:)
+  type(contact_energy_watch_t) :: contact_watch   ! energy given by contact (warns once)
   type(error_t) :: err
   character(len=:), allocatable :: stem, why, recorded_scene
   logical :: restart
@@ -161,6 +163,7 @@ program raccord_main
     if (size(pairs) > 0) call enforce_contact(pairs, model, state, err)
     if (err%failed()) call finish(err)
     call update_energy(model, state)         ! energy account at t(n)
+    call watch_contact_energy(pairs, state, contact_watch)
     call guard_finite()
     if (kcheck%active) call watch_kinetic_energy(kcheck, state)
     call write_due_outputs(out, model, state, pairs, err)
@@ -185,6 +188,7 @@ program raccord_main
   call delete_file(checkpoint_name(stem))
   call report_summary(model, state, out, pairs, first_step)
   call report_kinetic_check(kcheck)
+  call report_contact_energy(pairs, state, contact_watch)
   call log_debug('raccord', 'longest step ' // str(control%step_max, 3) // ' s, longest checkpoint write ' // &
     str(control%write_max, 3) // ' s (' // str(control%checkpoints) // ' checkpoints)')
   call drop_run_lock()

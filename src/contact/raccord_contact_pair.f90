@@ -51,6 +51,7 @@ module raccord_contact_pair
     real(wp), allocatable :: sg_c(:)
     real(wp), allocatable :: xcur(:,:), xpred(:,:), dcur(:,:), fc(:,:), ft(:,:), nodal_normal(:,:)
     integer, allocatable :: touched(:)
+    integer :: ntouched = 0                        !< nodes touched by this step's contact forces
     logical, allocatable :: mark(:)
     ! Step report.
     real(wp) :: force(2) = 0.0_wp                  !< resultant contact force on the slave body
@@ -162,8 +163,44 @@ contains
     do k = 1, size(pairs)
       call enforce_pair(pairs(k), model, state, err)
       if (err%failed()) return
+      if (k > 1) call account_shared_nodes(pairs(1:k), model, state)
     end do
   end subroutine enforce_contact
+
+  !> Pairs are solved one after the other, each on the positions the
+  !> previous ones corrected. Where pairs share nodes (two-pass contact:
+  !> the same surfaces with the roles swapped; a surface in contact with
+  !> two others) the last pair's correction dx also moves the increment
+  !> (u(n+1) - u(n-1))/2 (dx/4 on the first half step: (dt/4)(v(0) + v(1/2)))
+  !> that the earlier pairs' forces work on: their contact and friction
+  !> work gain -f . dx/2 (/4), so that (E-2) holds for the summed contact
+  !> force exactly (doc/theory-contact.md, section 6; doc/scene-reference.md,
+  !> contact). Each pair's fc, ft is zero off the nodes it touched this step.
+  subroutine account_shared_nodes(pairs, model, state)
+    type(contact_pair_t), intent(in) :: pairs(:)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    integer :: k, j, t, p, c
+    real(wp) :: dx, h, w, wc, wf
+    k = size(pairs)
+    h = velocity_step(state)
+    w = merge(0.25_wp, 0.5_wp, state%step == 0)
+    wc = 0.0_wp
+    wf = 0.0_wp
+    do t = 1, pairs(k)%ntouched
+      p = pairs(k)%touched(t)
+      do c = 1, 2
+        if (model%minv_dof(c, p) <= 0.0_wp) cycle
+        dx = state%dt*h*model%minv_dof(c, p)*pairs(k)%fc(c, p)/(1.0_wp + 0.5_wp*model%alpha(p)*h)
+        do j = 1, k - 1
+          wc = wc - w*pairs(j)%fc(c, p)*dx
+          wf = wf - w*pairs(j)%ft(c, p)*dx
+        end do
+      end do
+    end do
+    state%energy%contact = state%energy%contact + wc
+    state%energy%friction = state%energy%friction + wf
+  end subroutine account_shared_nodes
 
   subroutine enforce_pair(pair, model, state, err)
     type(contact_pair_t), intent(inout) :: pair
@@ -372,6 +409,12 @@ contains
 
     dt = state%dt
     h = velocity_step(state)
+    ! The last step's forces off: fc, ft are zero off this step's nodes
+    ! (account_shared_nodes relies on it).
+    do t = 1, pair%ntouched
+      pair%fc(:, pair%touched(t)) = 0.0_wp
+      pair%ft(:, pair%touched(t)) = 0.0_wp
+    end do
     nt = 0
     do j = 1, pair%cs%m
       fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
@@ -433,6 +476,7 @@ contains
         wf = wf - pair%ft(c, p)*inc
       end do
     end do
+    pair%ntouched = nt
     state%energy%discrete = state%energy%discrete + dh
     state%energy%damping = state%energy%damping + dd
     state%energy%kinetic = state%energy%kinetic + dk

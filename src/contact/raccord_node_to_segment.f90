@@ -32,7 +32,13 @@ module raccord_node_to_segment
   implicit none
   private
 
-  public :: build_node_to_segment, tributary_lengths
+  public :: build_node_to_segment, tributary_lengths, smooth_foot
+
+  !> Turning angle (radians, as a sine) below which the end segment of an
+  !> open master chain is read as straight (smooth_foot): there the cubic
+  !> weights do not add up to the segment's consistent loads, and a flat
+  !> master's end must keep the plain row for the patch test.
+  real(wp), parameter :: END_TURN = 1.0e-3_wp
 
 contains
 
@@ -52,8 +58,8 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     integer :: i, p, q, k, best, nen, a, tn
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
-    real(wp) :: nn(2, 3), dnf(2)
-    integer :: k2
+    real(wp) :: nn(2, 3), dnf(2), sw(4)
+    integer :: k2, sn(4)
     ! A foot up to 1 % of a segment beyond the end of the master chain still
     ! counts: a slave node that sits at the master's end (a common corner)
     ! projects a hair beyond it as soon as the end segment tilts.
@@ -97,6 +103,20 @@ contains
         end if
       end do
       if (best == 0) cycle near_nodes
+      if (nen == 2) then
+        ! Straight segments: the foot on the smoothed master (see smooth_foot).
+        call smooth_foot(master, x, best, xp, sn, sw, n_m)
+        g = dot_product(xpred(:, p) - (sw(1)*xpred(:, sn(1)) + sw(2)*xpred(:, sn(2)) + sw(3)*xpred(:, sn(3)) + &
+          sw(4)*xpred(:, sn(4))), n_m)
+        if (g > reach .or. g < -reach) cycle near_nodes
+        call cs_add_row(cs, i, p, -n_m, trib(i), slave%s0(i))
+        call cs_add_entry(cs, p, -1.0_wp)
+        do a = 1, 4
+          if (sw(a) /= 0.0_wp) call cs_add_entry(cs, sn(a), sw(a))
+        end do
+        call cs_finish_row(cs, xpred, du)
+        cycle near_nodes
+      end if
       ! Foot and normal from the continuous normal field of the closest
       ! segment; past its end, the neighbour's field takes over.
       k = best
@@ -154,6 +174,175 @@ contains
       end if
     end subroutine field_foot
   end subroutine build_node_to_segment
+
+  !> Foot of point xp on the smoothed master near its straight segment k
+  !> (doc/theory-contact.md, section 4, "Smoothed master"). Each straight
+  !> master segment (nodes A, B, t in [0, 1]) is read as the cubic Hermite
+  !> curve through A and B whose end tangents are (B - P)/2 and (N - A)/2,
+  !> P the node before A and N the node after B (uniform Catmull-Rom):
+  !>   C(t) = h00 A + h01 B + h10 (B - P)/2 + h11 (N - A)/2.
+  !> The curve runs through every master node, its tangent (so its normal)
+  !> is continuous at every node, and it is a fixed affine combination of
+  !> four master nodes: the gap row
+  !> n . (x_s - sum_a w_a x_a), n the curve's normal at the foot, is the
+  !> exact first variation of the distance to the curve (sliding along it
+  !> does no work) and follows rigid motions exactly. At an end of an open
+  !> chain the missing node is the reflection of the other one about the
+  !> end (the end tangent is along the end segment). The closest point is
+  !> sought on segment k and its two neighbours. On the end segment of an
+  !> open chain, where the chords turn by less than END_TURN/10 from the
+  !> segment, the piece is read as the segment itself, with its normal and
+  !> its own weights 1 - t and t (blended smoothly into the cubic up to
+  !> END_TURN): there the cubic weights do not add up to the segment's
+  !> consistent loads, and the plain row passes the patch test on
+  !> non-matching meshes with the fine side as slave. Returns the four nodes,
+  !> their weights (0 for an unused one) and the outward unit normal, on
+  !> the positions x (t(n)).
+  subroutine smooth_foot(master, x, k, xp, nodes, w, normal)
+    type(contact_surface_t), intent(in) :: master
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: k
+    real(wp), intent(in) :: xp(2)
+    integer, intent(out) :: nodes(4)
+    real(wp), intent(out) :: w(4), normal(2)
+    integer :: kk, c, nd(4)
+    real(wp) :: d, best_d, wt(4), tg(2)
+    best_d = huge(1.0_wp)
+    nodes = master%seg(1, k)
+    w = [0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp]
+    normal = 0.0_wp
+    do c = -1, 1
+      kk = neighbour_segment(master, k, c)
+      if (kk == 0) cycle
+      nd = [neighbour_segment(master, kk, -1), master%seg(1, kk), master%seg(2, kk), neighbour_segment(master, kk, 1)]
+      if (nd(1) > 0) nd(1) = master%seg(1, nd(1))
+      if (nd(4) > 0) nd(4) = master%seg(2, nd(4))
+      call span_closest(x, nd, xp, d, wt, tg)
+      if (d < best_d) then
+        best_d = d
+        nodes = nd
+        w = wt
+        normal = [tg(2), -tg(1)]/max(norm2(tg), tiny(1.0_wp))
+      end if
+    end do
+    where (nodes == 0) nodes = master%seg(1, k)
+  end subroutine smooth_foot
+
+  !> Segment c = -1 (before), 0 (itself) or +1 (after) segment k along
+  !> the master chain; 0 past the end of an open chain.
+  pure integer function neighbour_segment(master, k, c) result(kk)
+    type(contact_surface_t), intent(in) :: master
+    integer, intent(in) :: k, c
+    kk = k + c
+    if (master%closed) then
+      kk = modulo(kk - 1, master%nseg) + 1
+    else if (kk < 1 .or. kk > master%nseg) then
+      kk = 0
+    end if
+  end function neighbour_segment
+
+  !> Closest point of xp on the Hermite span of nodes nd = (P, A, B, N)
+  !> (P or N 0 when missing: reflected about A or B), by safeguarded Newton
+  !> on (C(t) - xp) . C'(t) = 0 over t in [0, 1]: its distance d, the
+  !> node weights w and the tangent t there.
+  subroutine span_closest(x, nd, xp, d, w, tg)
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: nd(4)
+    real(wp), intent(in) :: xp(2)
+    real(wp), intent(out) :: d, w(4), tg(2)
+    real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), d2w(4), phi, turn
+    integer :: it
+    xa = x(:, nd(2))
+    xb = x(:, nd(3))
+    if (nd(1) > 0) then
+      xq = x(:, nd(1))
+    else
+      xq = 2.0_wp*xa - xb
+    end if
+    if (nd(4) > 0) then
+      xn = x(:, nd(4))
+    else
+      xn = 2.0_wp*xb - xa
+    end if
+    len = norm2(xb - xa)
+    ba = 0.5_wp
+    bb = 0.5_wp
+    ! The end segment of an open chain: how much the piece turns (the sines
+    ! of the angles of the chords to P and N with the segment). Below
+    ! END_TURN/10 it is the segment itself (phi = 0: its weights 1 - t, t
+    ! and its normal), above END_TURN the cubic (phi = 1), in between a
+    ! smooth blend of the two curves, so that the row does not jump when a
+    ! bending master crosses the threshold. Elsewhere always the cubic.
+    phi = 1.0_wp
+    if (nd(1) == 0 .or. nd(4) == 0) then
+      turn = max(abs(cross2(xb - xq, xb - xa))/max(norm2(xb - xq)*len, tiny(1.0_wp)), &
+        abs(cross2(xn - xa, xb - xa))/max(norm2(xn - xa)*len, tiny(1.0_wp)))
+      phi = max(0.0_wp, min(1.0_wp, (turn - 0.1_wp*END_TURN)/(0.9_wp*END_TURN)))
+      phi = phi*phi*(3.0_wp - 2.0_wp*phi)
+    end if
+    ! Start from the projection on the chord.
+    t = dot_product(xp - xa, xb - xa)/max(len*len, tiny(1.0_wp))
+    t = max(0.0_wp, min(1.0_wp, t))
+    dbest = huge(1.0_wp)
+    tbest = t
+    do it = 1, 30
+      call weights(t)
+      c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
+      if (norm2(c) < dbest) then
+        dbest = norm2(c)
+        tbest = t
+      end if
+      tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
+      c2 = d2w(1)*xq + d2w(2)*xa + d2w(3)*xb + d2w(4)*xn
+      f = dot_product(c, tg)
+      fp = dot_product(tg, tg) + dot_product(c, c2)
+      if (fp <= 0.0_wp) fp = dot_product(tg, tg)
+      tn = max(0.0_wp, min(1.0_wp, t - f/max(fp, tiny(1.0_wp))))
+      if (abs(tn - t) <= 1.0e-14_wp) exit
+      t = tn
+    end do
+    t = tbest
+    call weights(t)
+    c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
+    d = norm2(c)
+    tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
+    ! A reflected node moves its weight to its neighbours (2 w to the end, -w to the other).
+    if (nd(1) == 0) then
+      w(2) = w(2) + 2.0_wp*w(1)
+      w(3) = w(3) - w(1)
+      w(1) = 0.0_wp
+    end if
+    if (nd(4) == 0) then
+      w(3) = w(3) + 2.0_wp*w(4)
+      w(2) = w(2) - w(4)
+      w(4) = 0.0_wp
+    end if
+  contains
+    !> Node weights of C(t), C'(t), C''(t) (Hermite basis with the tangents above).
+    subroutine weights(tt)
+      real(wp), intent(in) :: tt
+      real(wp) :: h00, h10, h01, h11
+      h00 = 2.0_wp*tt**3 - 3.0_wp*tt**2 + 1.0_wp
+      h10 = tt**3 - 2.0_wp*tt**2 + tt
+      h01 = -2.0_wp*tt**3 + 3.0_wp*tt**2
+      h11 = tt**3 - tt**2
+      w = [-ba*h10, h00 - bb*h11, h01 + ba*h10, bb*h11]
+      h00 = 6.0_wp*tt**2 - 6.0_wp*tt
+      h10 = 3.0_wp*tt**2 - 4.0_wp*tt + 1.0_wp
+      h01 = -h00
+      h11 = 3.0_wp*tt**2 - 2.0_wp*tt
+      dw = [-ba*h10, h00 - bb*h11, h01 + ba*h10, bb*h11]
+      h00 = 12.0_wp*tt - 6.0_wp
+      h10 = 6.0_wp*tt - 4.0_wp
+      h01 = -h00
+      h11 = 6.0_wp*tt - 2.0_wp
+      d2w = [-ba*h10, h00 - bb*h11, h01 + ba*h10, bb*h11]
+      ! Blend with the segment: C = (1 - phi) chord + phi cubic.
+      w = phi*w + (1.0_wp - phi)*[0.0_wp, 1.0_wp - tt, tt, 0.0_wp]
+      dw = phi*dw + (1.0_wp - phi)*[0.0_wp, -1.0_wp, 1.0_wp, 0.0_wp]
+      d2w = phi*d2w
+    end subroutine weights
+  end subroutine span_closest
 
   !> Outward unit normal of the master at its nodes: the mean of the
   !> normals of the segments meeting there (of its segment for a mid node),

@@ -12,7 +12,7 @@ program test_paper_energy
   call run_tests('paper_energy', [ &
     new_test('node-to-segment, slave = block', test_nts_block), &
     new_test('node-to-segment, slave = disc (mid mesh)', test_nts_disc), &
-    new_test('node-to-segment, slave = disc: energy given back falls under refinement', test_nts_disc_refine), &
+    new_test('node-to-segment, slave = disc, coarse and mid: no energy given back', test_nts_disc_refine), &
     new_test('mortar P1, slave = block', test_mortar_p1_block), &
     new_test('mortar P1, slave = disc', test_mortar_p1_disc), &
     new_test('mortar P0, slave = block', test_mortar_p0_block), &
@@ -57,21 +57,24 @@ contains
     call cycle_case(failure, 'reg_nts_slave_disc_mid.nml')
   end subroutine test_nts_disc
 
-  !> Node-to-segment measures gaps against polygonal surfaces; a node that
-  !> slides across a convex master vertex finds itself slightly inside the
-  !> next segment and is pushed out, so contact can give back a little
-  !> energy. It is a discretisation error: on the coarse mesh (disc arc h =
-  !> 0.078 mm) it is above the 1e-3 bound the other cases meet, and it must
-  !> fall by at least 10 times on the mid mesh (h = 0.028 mm).
+  !> Node-to-segment with the disc as slave: its nodes slide over the
+  !> block's faceted top. Against the polygon (before the smoothed master,
+  !> doc/theory-contact.md, section 6) a node crossing a vertex, or sliding
+  !> along a segment under a tilted normal, was pushed out and contact gave
+  !> back energy: 1.6e-3 of the peak internal energy on the coarse mesh,
+  !> falling under refinement. Against the smoothed master the condition is
+  !> the same as for the other cases and holds on both meshes with a margin
+  !> (measured 2e-16 coarse, 2e-6 mid): 1e-5 of the peak on each.
   subroutine test_nts_disc_refine(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    type(failure_t), allocatable :: ignored
     real(wp) :: coarse, mid
-    call cycle_case(ignored, 'reg_nts_slave_disc.nml', coarse)
+    call cycle_case(failure, 'reg_nts_slave_disc.nml', coarse)
+    if (allocated(failure)) return
     call cycle_case(failure, 'reg_nts_slave_disc_mid.nml', mid)
     if (allocated(failure)) return
     write(*, '(a,es10.3,a,es10.3)') '        energy given back / peak internal: coarse ', coarse, ', mid ', mid
-    call check(failure, mid < 0.1_wp*coarse, 'the energy contact gives back does not fall under refinement')
+    call check(failure, coarse < 1.0e-5_wp .and. mid < 1.0e-5_wp, &
+      'contact gives back more than 1e-5 of the peak internal energy')
   end subroutine test_nts_disc_refine
 
   subroutine test_mortar_p1_block(failure)
