@@ -70,7 +70,7 @@ contains
         str(state%time) // ' (step ' // str(state%step) // '), ' // str(frac, 3) // ' of the energy scale ' // &
         str(state%energy%scale, 3) // ' (threshold ' // str(CONTACT_ENERGY_WARN, 2) // '). The energy ' // &
         'balance still closes: this energy is in the kinetic and internal energy and is not physical. ' // &
-        'Refine the surfaces or make the finer or softer surface the slave (doc/theory-contact.md, section 6).')
+        'Refine the surfaces or make the finer or softer surface the slave (doc/theory-contact.md, section 7).')
     end if
   end subroutine watch_contact_energy
 
@@ -84,7 +84,7 @@ contains
       call log_warn('contact', 'contact gave the bodies energy: at most ' // str(watch%worst_given, 3) // &
         ' (' // str(watch%worst, 3) // ' of the energy scale, threshold ' // str(CONTACT_ENERGY_WARN, 2) // &
         ') at t = ' // str(watch%worst_time) // '; at the end ' // str(contact_energy_given(state, watch), 3) // &
-        '. The results are suspect where it happened (doc/theory-contact.md, section 6).')
+        '. The results are suspect where it happened (doc/theory-contact.md, section 7).')
     else
       call log_info('raccord', 'energy given by contact: at most ' // str(watch%worst, 3) // &
         ' of the energy scale (warning above ' // str(CONTACT_ENERGY_WARN, 2) // ')')

@@ -174,7 +174,7 @@ contains
   !> (u(n+1) - u(n-1))/2 (dx/4 on the first half step: (dt/4)(v(0) + v(1/2)))
   !> that the earlier pairs' forces work on: their contact and friction
   !> work gain -f . dx/2 (/4), so that (E-2) holds for the summed contact
-  !> force exactly (doc/theory-contact.md, section 6; doc/scene-reference.md,
+  !> force exactly (doc/theory-contact.md, section 7; doc/scene-reference.md,
   !> contact). Each pair's fc, ft is zero off the nodes it touched this step.
   subroutine account_shared_nodes(pairs, model, state)
     type(contact_pair_t), intent(in) :: pairs(:)

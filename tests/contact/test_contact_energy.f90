@@ -1,4 +1,4 @@
-!> Energy from contact (doc/theory-contact.md, section 6; issue: no energy
+!> Energy from contact (doc/theory-contact.md, section 7; issue: no energy
 !> from contact, shared surfaces).
 !> - Hard cases: the coarse Hertz scene (input/verification/hertz, cylinder
 !>   on a block), undamped, loaded over 2.5e-4 s and held to 6e-4 s, with
@@ -217,7 +217,7 @@ contains
     call check(failure, bal < 1.0e-10_wp, 'energy balance not exact with shared surfaces')
     ! One sweep over the pairs leaves an earlier pair's gaps to what the
     ! later pair moved; the next step pushes such nodes out, which gives a
-    ! little energy (doc/theory-contact.md, section 6): it must stay below
+    ! little energy (doc/theory-contact.md, section 7): it must stay below
     ! the run's warning threshold.
     call check(failure, wc_min > -CONTACT_ENERGY_WARN, 'contact gave the bodies more than the warning threshold')
   end subroutine two_pass_case

@@ -59,7 +59,7 @@ contains
 
   !> Node-to-segment with the disc as slave: its nodes slide over the
   !> block's faceted top. Against the polygon (before the smoothed master,
-  !> doc/theory-contact.md, section 6) a node crossing a vertex, or sliding
+  !> doc/theory-contact.md, section 7) a node crossing a vertex, or sliding
   !> along a segment under a tilted normal, was pushed out and contact gave
   !> back energy: 1.6e-3 of the peak internal energy on the coarse mesh,
   !> falling under refinement. Against the smoothed master the condition is
