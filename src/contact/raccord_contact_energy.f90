@@ -1,5 +1,5 @@
 !> Watch on the energy contact gives to the bodies (doc/theory-contact.md,
-!> section 6). Forward-increment contact closes gaps perfectly inelastically
+!> section 7). Forward-increment contact closes gaps perfectly inelastically
 !> and so takes energy out; it puts energy in only where the constraint
 !> rows do not follow the surfaces (a node pushed out of a surface it was
 !> found inside of). Some of that is inherent to moving, curved, faceted
