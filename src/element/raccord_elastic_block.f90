@@ -58,8 +58,6 @@ module raccord_elastic_block
     VOL_FULL, VOL_MEAN, MAT_J2, material_name
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
-  use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8, &
-    kernel_j2_axi_q4, kernel_j2_axi_q8
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
   implicit none
   private
@@ -388,6 +386,21 @@ module raccord_elastic_block
       type(block_watch_t), intent(in) :: watch
       real(wp), intent(inout) :: s(:,:), y(:,:), wsum(:)
     end subroutine add_nodal_plastic
+    !> One chunk through the block's J2 kernel (raccord_plastic_kernel): the
+    !> forces fe, Gauss-point stresses sg, active flags, elastic energy en,
+    !> plastic work dis (and for finite strain jm, jel, w2 as the finite
+    !> kernel; small strain: jm = 1, jel = 0, w2 = 0) of chunk ic, whose nc
+    !> elements' internal variables hist are updated in place.
+    pure module subroutine j2_chunk(blk, ic, nc, mon, hist, ue, fe, sg, act, en, dis, jm, jel, w2)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: ic, nc
+      logical, intent(in) :: mon
+      real(wp), intent(inout) :: hist(chunk_len, nhist, *)
+      real(wp), intent(in) :: ue(chunk_len, 2, max_nen)
+      real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
+      real(wp), intent(out) :: sg(chunk_len, 4, *), act(chunk_len), en, dis, jm, w2
+      integer, intent(out) :: jel
+    end subroutine j2_chunk
     !> The nodal stress contributions of the elements of group grp of a j2
     !> block (add_nodal_stress): the kernel's Gauss-point stresses
     !> extrapolated to the nodes.
@@ -685,18 +698,17 @@ contains
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), en, jm, w2, dis
     real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len)
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
-    logical :: reset, mon, watched, mean
+    logical :: reset, mon, watched
     nen = blk%nen
     reset = .false.
     if (present(fresh)) reset = fresh
     mon = .false.
     if (present(monitor)) mon = monitor
     watched = present(watch)
-    mean = blk%volumetric == VOL_MEAN
     if (blk%material == MAT_J2 .and. .not. present(plastic)) error stop 'add_internal_force: a j2 block needs its plastic state'
     dis = 0.0_wp
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, plastic, mean) &
+    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, plastic) &
     !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp, act)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
@@ -730,32 +742,8 @@ contains
           case (KERN_FINITE_Q8)
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
-          case (KERN_J2_SMALL_Q4)
-            call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
-              ue, fe, sgp, act, en, dis, jm, jel, w2)
-          case (KERN_J2_SMALL_Q8)
-            call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
-              ue, fe, sgp, act, en, dis, jm, jel, w2)
-          case (KERN_J2_FINITE_Q4)
-            call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
-              ue, fe, sgp, act, en, dis, jm, jel, w2)
-          case (KERN_J2_FINITE_Q8)
-            call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-              blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, plastic%h(:, :, :, ic), &
-              ue, fe, sgp, act, en, dis, jm, jel, w2)
-          case (KERN_J2_AXI_Q4)
-            call kernel_j2_axi_q4(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
-              blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis)
-            jm = 1.0_wp
-            jel = 0
-          case (KERN_J2_AXI_Q8)
-            call kernel_j2_axi_q8(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
-              blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis)
-            jm = 1.0_wp
-            jel = 0
+          case (KERN_J2_SMALL_Q4:KERN_J2_AXI_Q8)
+            call j2_chunk(blk, ic, nc, mon, plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_AXI_Q4)
             call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           case (KERN_AXI_Q8)

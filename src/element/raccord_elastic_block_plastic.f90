@@ -4,6 +4,8 @@
 !> parent declares are defined here with `module procedure`.
 submodule (raccord_elastic_block) raccord_elastic_block_plastic
   use raccord_plasticity, only: j2_initial_history, h_ebar
+  use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8, &
+    kernel_j2_axi_q4, kernel_j2_axi_q8
   implicit none
 
 contains
@@ -104,15 +106,48 @@ contains
     end do
   end procedure add_nodal_plastic
 
+  !> The block's J2 kernel on one chunk, chosen once per chunk from the
+  !> kernel fixed at make_plastic; the one place that calls the J2 kernels
+  !> (the time loop's forces and the stress output).
+  module procedure j2_chunk
+    logical :: mean
+    mean = blk%volumetric == VOL_MEAN
+    jm = 1.0_wp
+    jel = 0
+    w2 = 0.0_wp
+    select case (blk%kernel)
+    case (KERN_J2_SMALL_Q4)
+      call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        jm, jel, w2)
+    case (KERN_J2_SMALL_Q8)
+      call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        jm, jel, w2)
+    case (KERN_J2_FINITE_Q4)
+      call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        jm, jel, w2)
+    case (KERN_J2_FINITE_Q8)
+      call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        jm, jel, w2)
+    case (KERN_J2_AXI_Q4)
+      call kernel_j2_axi_q4(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
+        blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sg, act, en, dis)
+    case (KERN_J2_AXI_Q8)
+      call kernel_j2_axi_q8(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
+        blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sg, act, en, dis)
+    end select
+  end procedure j2_chunk
+
   !> The group's chunks through the kernel (on a copy of their internal
   !> variables, so the run's state is untouched), then each element's
   !> Gauss-point stresses extrapolated to its nodes (theory eq. 7.1).
   module procedure add_group_j2_stress
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), sgp(chunk_len, 4, max_gp)
     real(wp) :: hist(chunk_len, nhist, max_gp), act(chunk_len), en, dis, jm, w2
-    integer :: ic, e0, nc, i, a, node, jel, g, ngp
-    logical :: mean
-    mean = blk%volumetric == VOL_MEAN
+    integer :: ic, e0, nc, i, a, node, jel, ngp
     ngp = blk%ngp
     do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
       e0 = (ic - 1)*chunk_len
@@ -124,30 +159,7 @@ contains
         end do
       end do
       hist(:, :, 1:ngp) = plastic%h(:, :, :, ic)
-      select case (blk%kernel)
-      case (KERN_J2_SMALL_Q4)
-        call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
-          ue, fe, sgp, act, en, dis, jm, jel, w2)
-      case (KERN_J2_SMALL_Q8)
-        call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
-          ue, fe, sgp, act, en, dis, jm, jel, w2)
-      case (KERN_J2_FINITE_Q4)
-        call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
-          ue, fe, sgp, act, en, dis, jm, jel, w2)
-      case (KERN_J2_FINITE_Q8)
-        call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-          blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, .false., hist, &
-          ue, fe, sgp, act, en, dis, jm, jel, w2)
-      case (KERN_J2_AXI_Q4)
-        call kernel_j2_axi_q4(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
-          blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sgp, act, en, dis)
-      case (KERN_J2_AXI_Q8)
-        call kernel_j2_axi_q8(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
-          blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sgp, act, en, dis)
-      end select
+      call j2_chunk(blk, ic, nc, .false., hist, ue, fe, sgp, act, en, dis, jm, jel, w2)
       ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)
       call extrapolate(reshape(sgp(:, :, 1:ngp), [chunk_len, 4, ngp]))
     end do
