@@ -24,30 +24,10 @@ raccord=$2
 src=$3
 work=$4
 
-npass=0
-nfail=0
-pass() { npass=$((npass + 1)); echo "ok   [$case_name] $*"; }
-fail() { nfail=$((nfail + 1)); echo "FAIL [$case_name] $*"; }
-check() { # description command...
-  what=$1
-  shift
-  if "$@"; then pass "$what"; else fail "$what"; fi
-}
-finish() {
-  echo "$npass passed, $nfail failed"
-  [ "$nfail" -eq 0 ]
-  exit $?
-}
-has() { grep -qF -- "$2" "$1"; }
+. "$src/tests/support/cases.sh"
 
-for tool in h5dump h5diff; do
-  command -v "$tool" > /dev/null 2>&1 || { echo "skipped: $tool (hdf5-tools) not found"; exit 77; }
-done
-rm -rf "$work"
-mkdir -p "$work" || exit 1
-cd "$work" || exit 1
-export GFORTRAN_ERROR_BACKTRACE=0
-unset RACCORD_WALLCLOCK_SECONDS
+need_tools h5dump h5diff
+fresh_work
 
 # block DECK BODY_KEYS [TOP_DISPLACEMENT]: the unit block of tests/finite/data,
 # bottom held in y, sides in x, top driven down.
@@ -176,30 +156,7 @@ EOD
   [ "$code" -eq 0 ] || { cat cont/run.out; finish; }
   check "the slider is finite strain with a variable step" has cont/slide.log "finite strain, neo_hooke"
   deck usr1
-  "$raccord" -q -o usr1 usr1/slide.nml > usr1/run.out 2>&1 &
-  pid=$!
-  n=0
-  while [ "$(awk '!/^#/ && NF > 2 { s = $2 } END { print s + 0 }' usr1/slide.history.txt.part 2>/dev/null || echo 0)" -lt 300 ]; do
-    kill -0 "$pid" 2>/dev/null || { fail "raccord ended before it could be stopped"; finish; }
-    n=$((n + 1))
-    [ "$n" -lt 6000 ] || { kill -9 "$pid"; fail "never reached step 300"; finish; }
-    sleep 0.01
-  done
-  kill -STOP "$pid"
-  kill -USR1 "$pid"
-  kill -CONT "$pid"
-  wait "$pid"
-  code=$?
-  check "SIGUSR1: exit 5 (got $code)" test "$code" -eq 5
-  check "SIGUSR1: checkpoint written" test -s usr1/slide.checkpoint.h5
-  "$raccord" -q --restart usr1/slide.checkpoint.h5 > usr1/restart.out 2>&1
-  code=$?
-  check "restart: exit 0 (got $code)" test "$code" -eq 0
-  for f in slide.history.txt slide.contact1.txt slide.xmf; do
-    check "$f equals the continuous run's, byte for byte" cmp -s "cont/$f" "usr1/$f"
-  done
-  check "slide.h5 equals the continuous run's (h5diff, no tolerance)" \
-    h5diff --exclude-path /scene --exclude-path /scene_path cont/slide.h5 usr1/slide.h5
+  usr1_restart_equals slide
   ;;
 *)
   echo "unknown case $case_name" >&2

@@ -30,31 +30,10 @@ raccord=$2
 src=$3
 work=$4
 
-npass=0
-nfail=0
-pass() { npass=$((npass + 1)); echo "ok   [$case_name] $*"; }
-fail() { nfail=$((nfail + 1)); echo "FAIL [$case_name] $*"; }
-check() { # description command...
-  what=$1
-  shift
-  if "$@"; then pass "$what"; else fail "$what"; fi
-}
-finish() {
-  echo "$npass passed, $nfail failed"
-  [ "$nfail" -eq 0 ]
-  exit $?
-}
-has() { grep -qF -- "$2" "$1"; }
+. "$src/tests/support/cases.sh"
 
-for tool in h5dump h5diff; do
-  command -v "$tool" > /dev/null 2>&1 || { echo "skipped: $tool (hdf5-tools) not found"; exit 77; }
-done
-
-rm -rf "$work"
-mkdir -p "$work" || exit 1
-cd "$work" || exit 1
-export GFORTRAN_ERROR_BACKTRACE=0
-unset RACCORD_WALLCLOCK_SECONDS
+need_tools h5dump h5diff
+fresh_work
 
 # deck FOLDER [EXTRA_RUN_KEYS [FRICTION [METHOD [EXTRA_TIME_KEYS]]]]: FOLDER/slide.nml
 deck() {

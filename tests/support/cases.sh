@@ -1,0 +1,68 @@
+# Shared harness of the shell test cases (sourced by tests/*/..._cases.sh,
+# which set case_name, raccord and work first): counters and checks, the
+# hdf5-tools test, a fresh work folder, and the stop-and-restart comparison.
+
+npass=0
+nfail=0
+pass() { npass=$((npass + 1)); echo "ok   [$case_name] $*"; }
+fail() { nfail=$((nfail + 1)); echo "FAIL [$case_name] $*"; }
+check() { # description command...
+  what=$1
+  shift
+  if "$@"; then pass "$what"; else fail "$what"; fi
+}
+finish() {
+  echo "$npass passed, $nfail failed"
+  [ "$nfail" -eq 0 ]
+  exit $?
+}
+has() { grep -qF -- "$2" "$1"; }
+
+# need_tools TOOL...: exit 77 (skipped) when one is missing.
+need_tools() {
+  for tool in "$@"; do
+    command -v "$tool" > /dev/null 2>&1 || { echo "skipped: $tool (hdf5-tools) not found"; exit 77; }
+  done
+}
+
+# fresh_work: an empty $work, entered, with no backtraces and no wall-clock limit.
+fresh_work() {
+  rm -rf "$work"
+  mkdir -p "$work" || exit 1
+  cd "$work" || exit 1
+  export GFORTRAN_ERROR_BACKTRACE=0
+  unset RACCORD_WALLCLOCK_SECONDS
+}
+
+# usr1_restart_equals STEM: cont/STEM.nml has run to its end into cont/;
+# run usr1/STEM.nml (the same deck), freeze it past step 300, send SIGUSR1
+# (exit 5 with a checkpoint), restart from the checkpoint, and check that
+# the results equal the continuous run's bit for bit (text files byte for
+# byte, the HDF5 file by h5diff without tolerance).
+usr1_restart_equals() {
+  stem=$1
+  "$raccord" -q -o usr1 "usr1/$stem.nml" > usr1/run.out 2>&1 &
+  pid=$!
+  n=0
+  while [ "$(awk '!/^#/ && NF > 2 { s = $2 } END { print s + 0 }' "usr1/$stem.history.txt.part" 2>/dev/null || echo 0)" -lt 300 ]; do
+    kill -0 "$pid" 2>/dev/null || { fail "raccord ended before it could be stopped"; finish; }
+    n=$((n + 1))
+    [ "$n" -lt 6000 ] || { kill -9 "$pid"; fail "never reached step 300"; finish; }
+    sleep 0.01
+  done
+  kill -STOP "$pid"
+  kill -USR1 "$pid"
+  kill -CONT "$pid"
+  wait "$pid"
+  code=$?
+  check "SIGUSR1: exit 5 (got $code)" test "$code" -eq 5
+  check "SIGUSR1: checkpoint written" test -s "usr1/$stem.checkpoint.h5"
+  "$raccord" -q --restart "usr1/$stem.checkpoint.h5" > usr1/restart.out 2>&1
+  code=$?
+  check "restart: exit 0 (got $code)" test "$code" -eq 0
+  for f in "$stem.history.txt" "$stem.contact1.txt" "$stem.xmf"; do
+    check "$f equals the continuous run's, byte for byte" cmp -s "cont/$f" "usr1/$f"
+  done
+  check "$stem.h5 equals the continuous run's (h5diff, no tolerance)" \
+    h5diff --exclude-path /scene --exclude-path /scene_path "cont/$stem.h5" "usr1/$stem.h5"
+}
