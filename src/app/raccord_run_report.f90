@@ -9,26 +9,17 @@ module raccord_run_report
   use raccord_mesh, only: mesh_t, element_name
   use raccord_model, only: model_t
   use raccord_scene, only: scene_t, body_spec_t
-  use raccord_state, only: state_t, init_state
+  use raccord_state, only: state_t
   use raccord_time_step, only: time_plan_t
-  use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
-  use raccord_elastic_block, only: add_nodal_stress
   use raccord_output, only: output_t, wall_seconds
-  use raccord_contact_pair, only: contact_pair_t, enforce_contact
+  use raccord_contact_pair, only: contact_pair_t
+  use raccord_step_trial, only: step_cost_t, measure_step_cost
   use raccord_scene, only: METHOD_NTS, MULT_P0, MULT_P1, MULT_DUAL
   use raccord_material, only: KIN_FINITE, MAT_J2, kinematics_name, material_name, volumetric_name
   implicit none
   private
 
   public :: report_plan, report_summary, run_stem
-
-  !> Measured wall seconds of the parts of a step (measure_step_cost).
-  type :: step_cost_t
-    real(wp) :: element = 0.0_wp     !< forces, predictor, energy: per step
-    real(wp) :: contact = 0.0_wp     !< search, matching, multiplier solve: per step
-    real(wp) :: frame = 0.0_wp       !< one output frame's stress recovery
-    integer :: steps = 0             !< timed trial steps
-  end type step_cost_t
 
 contains
 
@@ -53,8 +44,9 @@ contains
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     integer :: ib, k, nq4, nq8
-    real(wp) :: c, setup
+    real(wp) :: c, setup, base, contact_mean
     type(step_cost_t) :: cost
+    character(len=:), allocatable :: range, reach
     character(len=:), allocatable :: effects
 
     if (len_trim(scene%run%title) > 0) then
@@ -128,14 +120,28 @@ contains
     ! What the run does before its first step (reading, building, this
     ! trial): the processor time of this process so far.
     call cpu_time(setup)
+    ! The contact work per step is timed in the contact zone of t = 0 and
+    ! with every slave node the prescribed motion can reach in contact
+    ! (raccord_step_trial); the estimate takes their mean, the range both.
+    contact_mean = 0.5_wp*(cost%contact + cost%contact_engaged)
     associate (n => real(plan%nsteps, wp), frames => real(scene%output%frames + 1, wp))
+      base = setup + cost%element*n + cost%frame*frames
       call log_raw('cost    about ' // str(1.0e9_wp*cost%element/real(max(1, model%nelem), wp), 3) // &
-        ' ns per element per step and ' // str(1.0e6_wp*cost%contact, 3) // ' us of contact per step, timed ' // &
-        'here over ' // str(cost%steps) // ' trial steps (' // trim(merge('wall     ', 'processor', &
-        model%nthreads > 1)) // ' time); estimated run time ' // &
-        str(setup + (cost%element + cost%contact)*n + cost%frame*frames, 3) // ' s (setup ' // str(setup, 3) // &
-        ' s, elements ' // str(cost%element*n, 3) // ' s, contact ' // str(cost%contact*n, 3) // ' s, output ' // &
-        str(cost%frame*frames, 3) // ' s)')
+        ' ns per element per step, timed here over ' // str(cost%steps) // ' trial steps (' // &
+        trim(merge('wall     ', 'processor', model%nthreads > 1)) // ' time)')
+      range = ''
+      if (size(pairs) > 0) then
+        reach = 'those the prescribed motion can reach'
+        if (.not. cost%motion_bounded) reach = 'all that face a master segment: loads have no bound'
+        call log_raw('cost    contact ' // str(1.0e6_wp*cost%contact, 3) // ' us per step in the contact ' // &
+          'zone of t = 0, ' // str(1.0e6_wp*cost%contact_engaged, 3) // ' us with ' // str(cost%engaged) // &
+          ' of ' // str(cost%slave_nodes) // ' slave nodes in contact (' // reach // ')')
+        range = ', between ' // str(base + cost%contact*n, 3) // ' and ' // &
+          str(base + cost%contact_engaged*n, 3) // ' s'
+      end if
+      call log_raw('cost    estimated run time ' // str(base + contact_mean*n, 3) // ' s (setup ' // &
+        str(setup, 3) // ' s, elements ' // str(cost%element*n, 3) // ' s, contact ' // &
+        str(contact_mean*n, 3) // ' s, output ' // str(cost%frame*frames, 3) // ' s)' // range)
     end associate
   end subroutine report_plan
 
@@ -219,73 +225,6 @@ contains
     end do
   end function block_types
 
-  !> Seconds per step of the real step, from a short trial run on scratch
-  !> copies of the state and the contact pairs from t = 0: the elastic work
-  !> (forces, predictor, energy) and the contact work (search, matching,
-  !> multipliers) apart; and the work of one output frame (the nodal stress
-  !> recovery; the HDF5 writes are not timed). The first step is not timed
-  !> (first touch of the scratch arrays); the trial stops after about 0.5 s
-  !> or 500 steps. Its messages (a first-step overlap, say) are held back:
-  !> the run itself reports them. A serial run is timed in processor time,
-  !> which other processes on the machine do not inflate: the estimate is
-  !> then the run time on a core of its own (a batch job's); a threaded run
-  !> is timed in wall time.
-  function measure_step_cost(model, plan, pairs) result(cost)
-    type(model_t), intent(in) :: model
-    type(time_plan_t), intent(in) :: plan
-    type(contact_pair_t), intent(in) :: pairs(:)
-    type(step_cost_t) :: cost
-    type(state_t) :: scratch
-    type(contact_pair_t), allocatable :: trial(:)
-    type(error_t) :: err
-    real(wp), allocatable :: s_node(:,:), wsum(:)
-    real(wp) :: t0, t1, t2, t3, element_sec, contact_sec
-    integer :: k, ib, level, nstep
-    logical :: threaded
-    level = log_level()
-    call log_set_level(LEVEL_ERROR + 1)
-    call init_state(model, plan%dt, plan%nsteps, scratch)
-    if (model%has_body_force) scratch%f_ext = model%f_body
-    trial = pairs
-    threaded = model%nthreads > 1
-    element_sec = 0.0_wp
-    contact_sec = 0.0_wp
-    nstep = 0
-    do k = 0, int(min(500_i8, plan%nsteps))
-      t0 = seconds_now(threaded)
-      call compute_forces(model, scratch)
-      call predict_motion(model, scratch)
-      t1 = seconds_now(threaded)
-      if (size(trial) > 0) call enforce_contact(trial, model, scratch, err)
-      if (err%failed()) exit
-      t2 = seconds_now(threaded)
-      call update_energy(model, scratch)
-      call advance_state(scratch)
-      t3 = seconds_now(threaded)
-      if (k == 0) cycle
-      element_sec = element_sec + (t1 - t0) + (t3 - t2)
-      contact_sec = contact_sec + (t2 - t1)
-      nstep = nstep + 1
-      if (element_sec + contact_sec > 0.5_wp) exit
-    end do
-    cost%steps = nstep
-    cost%element = element_sec/real(max(1, nstep), wp)
-    cost%contact = contact_sec/real(max(1, nstep), wp)
-    if (size(trial) == 0) cost%contact = 0.0_wp      ! only the clock's own cost was timed
-    allocate(s_node(4, model%nnode), wsum(model%nnode))
-    s_node = 0.0_wp
-    wsum = 0.0_wp
-    t0 = seconds_now(threaded)
-    do ib = 1, size(model%bodies)
-      do k = 1, size(model%bodies(ib)%blocks)
-        call add_nodal_stress(model%bodies(ib)%blocks(k), scratch%u, s_node, wsum, plastic=scratch%plastic(k, ib))
-      end do
-    end do
-    t1 = seconds_now(threaded)
-    cost%frame = t1 - t0
-    call log_set_level(level)
-  end function measure_step_cost
-
   !> ', j2: sigma_y0 = ..., H = ...' for an elastoplastic body, else ''.
   function plastic_detail(s) result(t)
     type(body_spec_t), intent(in) :: s
@@ -293,18 +232,6 @@ contains
     t = ''
     if (s%material == MAT_J2) t = ', sigma_y0 = ' // str(s%yield_stress, 4) // ', H = ' // str(s%hardening, 4)
   end function plastic_detail
-
-  !> Processor time of this process, or wall time when `wall`.
-  real(wp) function seconds_now(wall) result(t)
-    logical, intent(in) :: wall
-    integer(i8) :: count, rate
-    if (wall) then
-      call system_clock(count, rate)
-      t = real(count, wp)/real(rate, wp)
-    else
-      call cpu_time(t)
-    end if
-  end function seconds_now
 
   !> Wall time, speed and the final energy balance.
   !> first_step: the step this process started from (0, or the step of

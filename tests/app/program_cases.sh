@@ -348,6 +348,36 @@ check_contact)
   if awk -v c="${contact:-0}" -v t="${total:-0}" 'BEGIN { exit !(c > 0 && t > c) }'; then
     pass "estimate $total s includes contact $contact s"
   else fail "cost line without a contact share: $(grep '^cost' "$work/stdout.txt")"; fi
+  # The estimate lies in its range (contact zone of t = 0 .. engaged).
+  if awk '/^cost    estimated/ { for (i = 1; i < NF; i++) { if ($i == "time") e = $(i+1); if ($i == "between") lo = $(i+1); if ($i == "and") hi = $(i+1) } }
+      END { exit !(lo > 0 && lo <= e && e <= hi && hi > lo) }' "$work/stdout.txt"; then
+    pass "estimate within its range: $(grep '^cost    estimated' "$work/stdout.txt" | sed 's/.*between/between/')"
+  else fail "estimate outside its range: $(grep '^cost    estimated' "$work/stdout.txt")"; fi
+  # The contact work is also timed with the slave nodes the prescribed
+  # motion can reach placed on the master (raccord_step_trial). The disc
+  # (R = 1 mm, centre (0, 1)) touches the block top y = 0 at x = 0; driven
+  # down by d, a block-top node at x (spacing 0.05 mm for |x| < 0.7) is
+  # within reach when its distance to the arc, sqrt(x^2 + R^2) - R, is at
+  # most d + the search distance. The node at x = 0 already touches (timed
+  # at t = 0). For d = 0.05 and d = 0 the nearest node outside the bound is
+  # 0.02 mm beyond it, the nearest inside 0.006 mm: ten times the chords'
+  # sagitta (7.5e-4 mm on this mesh).
+  deck=$(basename "$extra")
+  cp "$(dirname "$extra")"/paper_q4*.msh "$work/"
+  for d in 0.05 0.0; do
+    sed "s/value = 0.0, -0.1581/value = 0.0, -$d/" "$extra" > "$work/$deck"
+    run --check "$deck"
+    expect_code 0
+    engaged=$(awk '/^cost    contact/ { for (i = 1; i < NF; i++) if ($i == "with") print $(i+1) }' "$work/stdout.txt")
+    reach=$(awk '/search distance/ { print $NF }' "$work/stdout.txt")
+    if awk -v n="${engaged:--1}" -v r="${reach:-0}" -v d="$d" 'BEGIN {
+        D = d + r; m = 0
+        for (k = -13; k <= 13; k++) { x = 0.05*k; if (k != 0 && sqrt(x*x + 1) - 1 <= D) m++ }
+        printf "drive %s: engaged %d, closed form %d (search distance %g)\n", d, n, m, r
+        exit !(r > 0 && n == m && sqrt(0.7^2 + 1) - 1 > D) }'; then
+      pass "drive $d: $engaged slave nodes engaged, as the closed form"
+    else fail "drive $d: engaged '$engaged', search distance '$reach': $(grep '^cost    contact' "$work/stdout.txt")"; fi
+  done
   ;;
 
 progress_live)
