@@ -184,7 +184,7 @@ contains
     real(wp), intent(inout) :: u(:,:), w(:,:)
     integer, intent(out) :: n
     real(wp) :: x(2), xa(2), t(2), p(2), pbest(2), xi, d, dbest, h, limit
-    integer :: i, j, node
+    integer :: i, j, node, prev
     logical :: at_end
 
     n = 0
@@ -216,6 +216,13 @@ contains
       ! A node already on the master (or with no segment beside it) is
       ! left as it is: the trial of t = 0 has timed it.
       if (dbest > limit .or. dbest <= 1.0e-9_wp*h) cycle
+      ! Two chain neighbours on one point (both nearest to one vertex of
+      ! the master, or a slave surface folded over itself) would make a
+      ! slave segment of length 0: the second stays where it is.
+      if (i > 1) then
+        prev = pair%slave%node(i - 1)
+        if (norm2(model%x(:, prev) + u(:, prev) - pbest) <= 1.0e-3_wp*h) cycle
+      end if
       w(:, node) = -approach*h/dt*(x - pbest)/dbest
       u(:, node) = pbest - model%x(:, node)
       n = n + 1
