@@ -88,12 +88,16 @@ contains
   end function scene_identity
 
   !> Write <stem>.checkpoint.h5 (via .part and rename).
-  subroutine write_checkpoint(stem, scene, state, pairs, mark, err)
+  !> watch: the record of the run's watchers (the quasi-static check, the
+  !> contact energy watch), kept so that a restarted run reports on the
+  !> whole run; they only report, so it is not in the checksum.
+  subroutine write_checkpoint(stem, scene, state, pairs, mark, watch, err)
     character(len=*), intent(in) :: stem
     type(scene_t), intent(in) :: scene
     type(state_t), intent(in) :: state
     type(contact_pair_t), intent(in) :: pairs(:)
     type(output_mark_t), intent(in) :: mark
+    real(wp), intent(in) :: watch(:)
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: part, where, identity, g
     integer(hid_t) :: file
@@ -151,6 +155,7 @@ contains
       call h5_write_real(file, g // 'residual_max', [pairs(k)%residual_max], where, err)
       call h5_write_i8(file, g // 'profile_bytes', [mark%profile_bytes(k)], where, err)
     end do
+    call h5_write_real(file, '/watch', watch, where, err)
     ! Outputs: frames and history rows so far (the rows themselves are in
     ! /history of the results file), and the files' lengths.
     call h5_write_i8(file, '/output/counters', [int(mark%frames_written, i8), mark%nrow, &
@@ -195,13 +200,16 @@ contains
   !> scene differs (first differing line named), when the file is not a
   !> complete raccord checkpoint of this layout, or when its arrays do not
   !> fit the model. ncol: number of history columns of this scene.
-  subroutine read_checkpoint(path, scene, state, pairs, ncol, mark, err)
+  !> watch: the watchers' record of write_checkpoint, when it has the
+  !> length of this scene's (else left unallocated: the watchers start anew).
+  subroutine read_checkpoint(path, scene, state, pairs, ncol, mark, watch, err)
     character(len=*), intent(in) :: path
     type(scene_t), intent(in) :: scene
     type(state_t), intent(inout) :: state
     type(contact_pair_t), intent(inout) :: pairs(:)
     integer, intent(in) :: ncol
     type(output_mark_t), intent(out) :: mark
+    real(wp), allocatable, intent(inout) :: watch(:)
     type(error_t), intent(inout) :: err
     integer(hid_t) :: file
     character(len=:), allocatable :: where, text, identity, g
@@ -313,6 +321,12 @@ contains
         exit steps
       end if
       mark%ncol = ncol
+      if (allocated(watch) .and. h5_link_exists(file, '/watch')) then
+        call h5_read_real(file, '/watch', watch, where, err)
+        if (err%failed()) exit steps
+      else if (allocated(watch)) then
+        deallocate(watch)
+      end if
       call verify_checkpoint(file, path, identity, state, pairs, mark, err)
     end block steps
     call close_checkpoint(file, where, err)

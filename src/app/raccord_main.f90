@@ -32,7 +32,8 @@ program raccord_main
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
-  use raccord_contact_energy, only: contact_energy_watch_t, watch_contact_energy, report_contact_energy
+  use raccord_contact_energy, only: contact_energy_watch_t, watch_contact_energy, report_contact_energy, &
+    contact_watch_record, restore_contact_watch, CONTACT_WATCH_LENGTH
   use raccord_run_report, only: report_plan, report_summary, run_stem
   use raccord_output, only: output_t, output_mark_t, open_outputs, write_due_outputs, close_outputs, &
     mark_outputs, suspend_outputs, resume_outputs, history_width
@@ -43,7 +44,8 @@ program raccord_main
   use raccord_run_lock, only: take_run_lock, drop_run_lock
   use raccord_threads, only: wait_passively_if_oversubscribed
   use raccord_verify, only: verify_file
-  use raccord_kinetic_check, only: kinetic_check_t, init_kinetic_check, watch_kinetic_energy, report_kinetic_check
+  use raccord_kinetic_check, only: kinetic_check_t, init_kinetic_check, watch_kinetic_energy, report_kinetic_check, &
+    kinetic_check_record, restore_kinetic_check, KINETIC_CHECK_LENGTH
   implicit none
 
   interface
@@ -76,6 +78,7 @@ program raccord_main
   logical :: restart
   integer(i8) :: first_step
   type(kinetic_check_t) :: kcheck            ! quasi-static check of a mass-scaled run
+  real(wp), allocatable :: watch_record(:)   ! the watchers' record of a checkpoint (restart)
 
   ! Phase 0: what the user asked for; stop signals ask for a checkpoint.
   call wait_passively_if_oversubscribed()    ! may restart the program (raccord_threads)
@@ -143,6 +146,10 @@ program raccord_main
   first_step = state%step
   call init_kinetic_check(kcheck, model%scaling%active, scene%time%kinetic_ratio_warn, &
     scene%time%kinetic_check_from, plan%t_end)
+  if (allocated(watch_record)) then          ! a restart goes on with what the watchers saw
+    call restore_kinetic_check(kcheck, watch_record(1:KINETIC_CHECK_LENGTH))
+    call restore_contact_watch(contact_watch, watch_record(KINETIC_CHECK_LENGTH+1:))
+  end if
   if (model%has_body_force) state%f_ext = model%f_body
   call start_limits()
 
@@ -235,7 +242,8 @@ contains
   !> reopen the running result files where it left them.
   subroutine resume_run()
     type(output_mark_t) :: mark
-    call read_checkpoint(cli%restart_path, scene, state, pairs, history_width(model, pairs), mark, err)
+    allocate(watch_record(KINETIC_CHECK_LENGTH + CONTACT_WATCH_LENGTH))
+    call read_checkpoint(cli%restart_path, scene, state, pairs, history_width(model, pairs), mark, watch_record, err)
     if (err%failed()) call finish(err)
     call resume_outputs(out, scene, model, plan, pairs, stem, mark, err)
     if (err%failed()) call finish(err)
@@ -273,7 +281,8 @@ contains
     call system_clock(c0, rate)
     call mark_outputs(out, mark, err)
     if (err%failed()) call finish(err)
-    call write_checkpoint(stem, scene, state, pairs, mark, err)
+    call write_checkpoint(stem, scene, state, pairs, mark, &
+      [kinetic_check_record(kcheck), contact_watch_record(contact_watch)], err)
     if (err%failed()) call finish(err)
     call system_clock(c1)
     call note_checkpoint(control, real(c1 - c0, wp)/real(rate, wp))

@@ -25,7 +25,7 @@ module raccord_contact_energy
   !> Fraction of the energy scale above which the run warns.
   real(wp), parameter, public :: CONTACT_ENERGY_WARN = 1.0e-2_wp
 
-  !> What the watch has seen (this process: a restarted run starts anew).
+  !> What the watch has seen (kept by a checkpoint: contact_watch_record).
   type, public :: contact_energy_watch_t
     logical :: warned = .false.
     real(wp) :: worst = 0.0_wp        !< largest E_given / scale seen
@@ -35,6 +35,10 @@ module raccord_contact_energy
   end type contact_energy_watch_t
 
   public :: watch_contact_energy, report_contact_energy, contact_energy_given
+  public :: contact_watch_record, restore_contact_watch
+
+  !> Length of the record a checkpoint keeps (contact_watch_record).
+  integer, parameter, public :: CONTACT_WATCH_LENGTH = 5
 
 contains
 
@@ -73,6 +77,25 @@ contains
         'Refine the surfaces or make the finer or softer surface the slave (doc/theory-contact.md, section 7).')
     end if
   end subroutine watch_contact_energy
+
+  !> What the watch has seen, for a checkpoint: a restarted run reports
+  !> the largest energy given over the whole run, and warns once.
+  pure function contact_watch_record(watch) result(r)
+    type(contact_energy_watch_t), intent(in) :: watch
+    real(wp) :: r(CONTACT_WATCH_LENGTH)
+    r = [merge(1.0_wp, 0.0_wp, watch%warned), watch%worst, watch%worst_time, watch%worst_given, watch%base]
+  end function contact_watch_record
+
+  !> The inverse of contact_watch_record.
+  subroutine restore_contact_watch(watch, r)
+    type(contact_energy_watch_t), intent(inout) :: watch
+    real(wp), intent(in) :: r(CONTACT_WATCH_LENGTH)
+    watch%warned = r(1) > 0.5_wp
+    watch%worst = r(2)
+    watch%worst_time = r(3)
+    watch%worst_given = r(4)
+    watch%base = r(5)
+  end subroutine restore_contact_watch
 
   !> The summary line (and the warning again if the threshold was passed).
   subroutine report_contact_energy(pairs, state, watch)

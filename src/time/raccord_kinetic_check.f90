@@ -30,6 +30,10 @@ module raccord_kinetic_check
   end type kinetic_check_t
 
   public :: init_kinetic_check, watch_kinetic_energy, report_kinetic_check
+  public :: kinetic_check_record, restore_kinetic_check
+
+  !> Length of the record a checkpoint keeps (kinetic_check_record).
+  integer, parameter, public :: KINETIC_CHECK_LENGTH = 4
 
 contains
 
@@ -64,6 +68,24 @@ contains
         'lower mass_scaling_dt / mass_scaling_factor or load more slowly')
     end if
   end subroutine watch_kinetic_energy
+
+  !> What the check has seen, for a checkpoint: a restarted run goes on
+  !> with the running maximum (KC-1) and the warning of the run before.
+  pure function kinetic_check_record(check) result(r)
+    type(kinetic_check_t), intent(in) :: check
+    real(wp) :: r(KINETIC_CHECK_LENGTH)
+    r = [check%internal_max, check%ratio_max, check%t_max, merge(1.0_wp, 0.0_wp, check%warned)]
+  end function kinetic_check_record
+
+  !> The inverse of kinetic_check_record, after init_kinetic_check.
+  subroutine restore_kinetic_check(check, r)
+    type(kinetic_check_t), intent(inout) :: check
+    real(wp), intent(in) :: r(KINETIC_CHECK_LENGTH)
+    check%internal_max = r(1)
+    check%ratio_max = r(2)
+    check%t_max = r(3)
+    check%warned = r(4) > 0.5_wp
+  end subroutine restore_kinetic_check
 
   !> The largest ratio of the run, at its end.
   subroutine report_kinetic_check(check)
