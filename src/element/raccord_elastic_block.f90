@@ -23,9 +23,11 @@
 !>   f_a += (sqrt(c) sigma) H^T D_a          (c = w_g detJ h)
 !> which is f = K u with K = sum_g c B^T C B (eq. 3.2). H is stored
 !> h(chunk_len, 4, ngp, nchunk); the cold data c(ngp, nel) serve mass,
-!> body force and stress recovery. The kernel (raccord_q8_kernel, eqs.
-!> 6.6-6.9) forms the natural gradients and the nodal forces by sum
-!> factorisation over the tensor 3x3 rule instead of the sums over a.
+!> body force, stress recovery and the other kernels. The small-strain
+!> plane Q8 kernel (raccord_q8_kernel, eqs. 6.6-6.10) computes the same
+!> forces by sum factorisation over the tensor 3x3 rule, rebuilding J at the
+!> points from the element's coordinates xq8 (16 reals instead of H's 36:
+!> the step is memory-bound at 1e5 elements, doc/performance.md).
 !>
 !> Threading (OpenMP, doc/performance.md "Threading"): consecutive chunks
 !> form groups (group_len chunks, up to 32, fixed by the element count) and
@@ -61,7 +63,7 @@ module raccord_elastic_block
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
-  use raccord_q8_kernel, only: kernel_q8_tensor
+  use raccord_q8_kernel, only: kernel_q8
   implicit none
   private
 
@@ -147,6 +149,10 @@ module raccord_elastic_block
     ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
+    !> (chunk_len, 2, 8, nchunk) the small-strain plane Q8 kernel's data: the
+    !> element's node coordinates less its node 1's (raccord_q8_kernel);
+    !> dropped when the block gets another kernel
+    real(wp), allocatable, private :: xq8(:,:,:,:)
     ! Finite strain only (Q4 and Q8)
     !> (chunk_len, 4, ngp, nchunk) reference geometry of the finite kernel:
     !> Q8, J0^-1 column-major per Gauss point; Q4, the exact split of the
@@ -547,6 +553,18 @@ contains
     else
       blk%kernel = KERN_Q8
       call init_gauss_maps(blk, x, err)
+      if (err%failed()) return
+      allocate(blk%xq8(chunk_len, 2, nen, blk%nchunk), source=0.0_wp, stat=stat, errmsg=msg)
+      if (stat /= 0) then
+        call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
+          ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
+        return
+      end if
+      do i = 1, blk%nel
+        do a = 1, nen
+          blk%xq8(i - chunk_len*((i - 1)/chunk_len), :, a, (i - 1)/chunk_len + 1) = x(:, conn(a, i)) - x(:, conn(1, i))
+        end do
+      end do
     end if
   end subroutine init_elastic_block
 
@@ -738,7 +756,7 @@ contains
           case (KERN_Q4)
             call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
           case (KERN_Q8)
-            call kernel_q8_tensor(nc, blk%lam, blk%mu, blk%gxi(1, 3), blk%h(:, :, :, ic), ue, fe)
+            call kernel_q8(nc, blk%lam, blk%mu, blk%gxi(1, 3), blk%wts, blk%thickness, blk%xq8(:, :, :, ic), ue, fe)
           case (KERN_FINITE_Q4)
             call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
