@@ -23,7 +23,11 @@
 !>   f_a += (sqrt(c) sigma) H^T D_a          (c = w_g detJ h)
 !> which is f = K u with K = sum_g c B^T C B (eq. 3.2). H is stored
 !> h(chunk_len, 4, ngp, nchunk); the cold data c(ngp, nel) serve mass,
-!> body force and stress recovery.
+!> body force, stress recovery and the other kernels. The small-strain
+!> plane Q8 kernel (raccord_q8_kernel, eqs. 6.6-6.10) computes the same
+!> forces by sum factorisation over the tensor 3x3 rule, rebuilding J at the
+!> points from the element's coordinates xq8 (16 reals instead of H's 36:
+!> the step is memory-bound at 1e5 elements, doc/performance.md).
 !>
 !> Threading (OpenMP, doc/performance.md "Threading"): consecutive chunks
 !> form groups (group_len chunks, up to 32, fixed by the element count) and
@@ -59,6 +63,7 @@ module raccord_elastic_block
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
+  use raccord_q8_kernel, only: kernel_q8
   implicit none
   private
 
@@ -144,6 +149,10 @@ module raccord_elastic_block
     ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
+    !> (chunk_len, 2, 8, nchunk) the small-strain plane Q8 kernel's data: the
+    !> element's node coordinates less its node 1's (raccord_q8_kernel);
+    !> dropped when the block gets another kernel
+    real(wp), allocatable, private :: xq8(:,:,:,:)
     ! Finite strain only (Q4 and Q8)
     !> (chunk_len, 4, ngp, nchunk) reference geometry of the finite kernel:
     !> Q8, J0^-1 column-major per Gauss point; Q4, the exact split of the
@@ -544,6 +553,18 @@ contains
     else
       blk%kernel = KERN_Q8
       call init_gauss_maps(blk, x, err)
+      if (err%failed()) return
+      allocate(blk%xq8(chunk_len, 2, nen, blk%nchunk), source=0.0_wp, stat=stat, errmsg=msg)
+      if (stat /= 0) then
+        call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
+          ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
+        return
+      end if
+      do i = 1, blk%nel
+        do a = 1, nen
+          blk%xq8(i - chunk_len*((i - 1)/chunk_len), :, a, (i - 1)/chunk_len + 1) = x(:, conn(a, i)) - x(:, conn(1, i))
+        end do
+      end do
     end if
   end subroutine init_elastic_block
 
@@ -735,7 +756,7 @@ contains
           case (KERN_Q4)
             call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
           case (KERN_Q8)
-            call kernel_q8(nc, blk%lam, blk%mu, blk%dnref, blk%h(:, :, :, ic), ue, fe)
+            call kernel_q8(nc, blk%lam, blk%mu, blk%gxi(1, 3), blk%wts, blk%thickness, blk%xq8(:, :, :, ic), ue, fe)
           case (KERN_FINITE_Q4)
             call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
@@ -828,63 +849,6 @@ contains
       fe(i, 2, 4) = g4*ry - fy2
     end do elements
   end subroutine kernel_q4
-
-  !> fe = K_e ue for nc Q8 elements of a chunk (theory eq. 6.1). The
-  !> Gauss loop is outside and the loop over the chunk's elements inside, so
-  !> every array is read with unit stride across the SIMD lanes and few
-  !> values live in registers (keeping an element's 16 nodal values and 16
-  !> forces in registers across the 9 points measured about 10 % slower,
-  !> doc/performance.md). Sizes are compile-time constants; dn(:, a, g) are
-  !> loop-invariant scalars broadcast across the lanes.
-  pure subroutine kernel_q8(nc, lam, mu, dn, h, ue, fe)
-    integer, intent(in) :: nc
-    integer, parameter :: nen = 8, ngp = 9
-    real(wp), intent(in) :: lam, mu, dn(2, nen, ngp), h(chunk_len, 4, ngp), ue(chunk_len, 2, max_nen)
-    real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
-    real(wp) :: d11, d12, d21, d22, h11, h21, h12, h22, g11, g12, g21, g22, tr, s11, s22, s12, mu2
-    real(wp) :: t11, t12, t21, t22
-    integer :: g, a, i
-    mu2 = 2.0_wp*mu
-    fe(1:nc, :, 1:nen) = 0.0_wp
-    gauss: do g = 1, ngp
-      elements: do i = 1, nc
-        ! natural gradient of u: d = sum_a u_a (dN_a/dxi, dN_a/deta)
-        d11 = 0.0_wp
-        d12 = 0.0_wp
-        d21 = 0.0_wp
-        d22 = 0.0_wp
-        do a = 1, nen
-          d11 = d11 + ue(i, 1, a)*dn(1, a, g)
-          d12 = d12 + ue(i, 1, a)*dn(2, a, g)
-          d21 = d21 + ue(i, 2, a)*dn(1, a, g)
-          d22 = d22 + ue(i, 2, a)*dn(2, a, g)
-        end do
-        h11 = h(i, 1, g)
-        h21 = h(i, 2, g)
-        h12 = h(i, 3, g)
-        h22 = h(i, 4, g)
-        ! sqrt(c) grad u = d H
-        g11 = d11*h11 + d12*h21
-        g12 = d11*h12 + d12*h22
-        g21 = d21*h11 + d22*h21
-        g22 = d21*h12 + d22*h22
-        ! Hooke (theory eq. 3.1), scaled by sqrt(c)
-        tr = lam*(g11 + g22)
-        s11 = tr + mu2*g11
-        s22 = tr + mu2*g22
-        s12 = mu*(g12 + g21)
-        ! t = (sqrt(c) sigma) H^T; f_a += t (dN_a/dxi, dN_a/deta)
-        t11 = s11*h11 + s12*h12
-        t12 = s11*h21 + s12*h22
-        t21 = s12*h11 + s22*h12
-        t22 = s12*h21 + s22*h22
-        do a = 1, nen
-          fe(i, 1, a) = fe(i, 1, a) + t11*dn(1, a, g) + t12*dn(2, a, g)
-          fe(i, 2, a) = fe(i, 2, a) + t21*dn(1, a, g) + t22*dn(2, a, g)
-        end do
-      end do elements
-    end do gauss
-  end subroutine kernel_q8
 
   !> The block's kernel reports its stored energy (and more) through a
   !> block_watch_t: finite strain and j2 blocks; the linear blocks' energy

@@ -79,6 +79,7 @@ contains
       end do
     end do
     blk%kernel = merge(KERN_AXI_Q4, KERN_AXI_Q8, blk%etype == ELEM_Q4)
+    if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
   end procedure make_axisymmetric
 
   !> sqrt(c) N_a/r_g of element e at Gauss point g (eps_tt row of B, scaled).

@@ -38,6 +38,7 @@ contains
     blk%density = density
     blk%moduli = make_moduli(blk%young, blk%poisson)
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
+    if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
     call init_reference_data(blk, x, err)
   end procedure make_finite
 

@@ -51,6 +51,7 @@ contains
       blk%kernel = merge(KERN_J2_SMALL_Q4, KERN_J2_SMALL_Q8, blk%etype == ELEM_Q4)
       call init_reference_data(blk, x, err)
     end if
+    if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
   contains
     !> c and V_e of an axisymmetric block in the kernels' chunk layout
     !> (padding lanes: c = 1, never scattered).
