@@ -77,9 +77,6 @@ contains
       call bad_value(deck, blk, label, 'material', 'material ''' // trim(material) // ''' is a finite-strain law ' // &
         'and kinematics is ''small''', 'write kinematics = ''finite'' beside material = ''' // trim(material) // &
         ''', or material = ''linear_elastic'' for small strain', err)
-    else if (spec%kinematics == KIN_FINITE .and. spec%axisymmetric) then
-      call bad_value(deck, blk, label, 'hypothesis', 'finite strain is not built for axisymmetric bodies yet', &
-        'write kinematics = ''small'' for an axisymmetric body, or model it in plane strain', err)
     else if (spec%kinematics == KIN_FINITE .and. spec%plane_stress) then
       call bad_value(deck, blk, label, 'hypothesis', 'finite strain is built for plane strain only', &
         'write hypothesis = ''plane_strain'', or kinematics = ''small'' for a plane-stress body', err)
