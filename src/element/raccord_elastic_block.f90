@@ -970,7 +970,8 @@ contains
     end if
     if (blk%kinematics == KIN_FINITE) what = what + 2
     if (blk%axisymmetric) what = what + 4
-    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain) then
+    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain &
+        .and. what /= finite_axi_strain) then
       if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
       what = j2_stress
     end if
