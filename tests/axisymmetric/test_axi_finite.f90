@@ -18,7 +18,7 @@ program test_axi_finite
   use raccord_strings, only: str
   use raccord_scene_runner, only: scene_run_t, prepare_deck
   use raccord_elastic_block, only: add_internal_force, add_nodal_stress, block_watch_t, init_watch, watch_energy, &
-    block_plastic_t, init_plastic, watch_inverted
+    block_plastic_t, init_plastic, watch_inverted, element_eigenvalue_bounds, finite_w2_elements
   use axi_support, only: write_mesh_inp
   implicit none
 
@@ -35,7 +35,8 @@ program test_axi_finite
     new_test('homogeneous stretch + axial translation: closed-form Cauchy stress; translation: none', &
       test_homogeneous), &
     new_test('small displacement: finite = small-strain axisymmetric forces (Hooke and j2)', test_small_limit), &
-    new_test('j2 Hencky: homogeneous uniaxial stress of a cylinder at stretch 1.2, closed form', test_j2_uniaxial)])
+    new_test('j2 Hencky: homogeneous uniaxial stress of a cylinder at stretch 1.2, closed form', test_j2_uniaxial), &
+    new_test('stable step: the kernel''s estimate at rest >= the exact element bound (hoop terms, axis)', test_step)])
 
 contains
 
@@ -311,4 +312,31 @@ contains
       if (allocated(failure)) return
     end do
   end subroutine test_j2_uniaxial
+
+  !> Every element's omega^2 estimate of the kernel at rest (the plane
+  !> current-length estimate times the hoop factor) is at least its exact
+  !> bound lambda_max(K_e, M_e) with the hoop stiffness and the axis dofs
+  !> dropped; the estimates of elements touching the axis and away from it
+  !> are printed against that bound.
+  subroutine test_step(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(scene_run_t), allocatable :: run
+    real(wp), allocatable :: w2e(:), w2f(:)
+    integer :: nen
+    do nen = 4, 8, 4
+      allocate(run)
+      call prepare(failure, 'step_' // str(nen), nen, 'kinematics = ''finite'', material = ''neo_hooke''', run)
+      if (allocated(failure)) return
+      associate (blk => run%model%bodies(1)%blocks(1))
+        allocate(w2e(blk%nel), w2f(blk%nel))
+        call element_eigenvalue_bounds(blk, 1.0e-3_wp, w2e)
+        call finite_w2_elements(blk, w2f)
+        print '(a)', '        Q' // str(nen) // ': estimate / exact bound from ' // str(minval(w2f/w2e), 4) // &
+          ' to ' // str(maxval(w2f/w2e), 4) // ' (element 1, on the axis: ' // str(w2f(1)/w2e(1), 4) // ')'
+        call check(failure, all(w2f >= w2e*(1.0_wp - 1.0e-12_wp)), 'Q' // str(nen) // ': an estimate below the ' // &
+          'exact bound: ' // str(minval(w2f/w2e)))
+      end associate
+      deallocate(run, w2e, w2f)
+    end do
+  end subroutine test_step
 end program test_axi_finite
