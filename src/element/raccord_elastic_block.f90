@@ -94,6 +94,10 @@ module raccord_elastic_block
   integer, parameter :: KERN_J2_AXI_Q4 = 9, KERN_J2_AXI_Q8 = 10
   !> small-strain axisymmetric Q4 and Q8 (make_axisymmetric, raccord_axi_kernel)
   integer, parameter :: KERN_AXI_Q4 = 21, KERN_AXI_Q8 = 22
+  !> finite strain on axisymmetric blocks: hyperelastic (23, 24) and J2
+  !> (11, 12, in the J2 range) (raccord_finite_axi_kernel)
+  integer, parameter :: KERN_FINITE_AXI_Q4 = 23, KERN_FINITE_AXI_Q8 = 24
+  integer, parameter :: KERN_J2_FINITE_AXI_Q4 = 11, KERN_J2_FINITE_AXI_Q8 = 12
   !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
   !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
   !> M11, M12, M22 (eq. 6.5).
@@ -170,6 +174,9 @@ module raccord_elastic_block
     logical :: axisymmetric = .false.
     real(wp), allocatable, private :: hoop(:,:,:)    !< (chunk_len, ngp, nchunk) sqrt(c)/r_g
     logical, allocatable, private :: on_axis(:,:)    !< (nen, nel) node at r = 0 (u_r held at 0)
+    ! Axisymmetric finite strain only (raccord_elastic_block_finite_axi)
+    real(wp), allocatable, private :: rr(:,:,:)      !< (chunk_len, ngp, nchunk) 1/R_g
+    real(wp), allocatable, private :: hfac(:,:)      !< (chunk_len, nchunk) hoop factor of the step estimate
   end type elastic_block_t
 
   !> What the finite-strain kernel reports per chunk each step (the caller
@@ -420,6 +427,50 @@ module raccord_elastic_block
       type(block_plastic_t), intent(in) :: plastic
       real(wp), intent(inout) :: s(:,:), wsum(:)
     end subroutine add_group_j2_stress
+    ! Axisymmetric finite strain (raccord_elastic_block_finite_axi)
+    !> The kernel data of an axisymmetric finite-strain or finite j2 block
+    !> (after init_reference_data): 1/R_g and the hoop factor of the step.
+    module subroutine init_finite_axi(blk, err)
+      type(elastic_block_t), intent(inout) :: blk
+      type(error_t), intent(inout) :: err
+    end subroutine init_finite_axi
+    !> One chunk through the axisymmetric finite kernel, as j2_chunk (the
+    !> block's law; hist is left alone by the hyperelastic laws).
+    pure module subroutine finite_axi_chunk(blk, ic, nc, mon, hist, ue, fe, sg, act, en, dis, jm, jel, w2)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: ic, nc
+      logical, intent(in) :: mon
+      real(wp), intent(inout) :: hist(chunk_len, nhist, *)
+      real(wp), intent(in) :: ue(chunk_len, 2, max_nen)
+      real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
+      real(wp), intent(out) :: sg(chunk_len, 4, *), act(chunk_len), en, dis, jm, w2
+      integer, intent(out) :: jel
+    end subroutine finite_axi_chunk
+    !> The same for a hyperelastic block (no internal variables).
+    pure module subroutine finite_axi_elastic_chunk(blk, ic, nc, mon, ue, fe, en, jm, jel, w2)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: ic, nc
+      logical, intent(in) :: mon
+      real(wp), intent(in) :: ue(chunk_len, 2, max_nen)
+      real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
+      real(wp), intent(out) :: en, jm, w2
+      integer, intent(out) :: jel
+    end subroutine finite_axi_elastic_chunk
+    !> Each element's omega^2 estimate of the axisymmetric finite kernel at
+    !> rest (finite_w2_elements of an axisymmetric block).
+    module subroutine finite_axi_w2_elements(blk, w2)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(out) :: w2(:)
+    end subroutine finite_axi_w2_elements
+    !> Nodal Cauchy stress (rr, zz, rz, tt) or logarithmic strain of the
+    !> elements of group grp of an axisymmetric finite-strain block.
+    module subroutine add_group_finite_axi(blk, grp, u, strain, s, wsum)
+      type(elastic_block_t), intent(in) :: blk
+      integer, intent(in) :: grp
+      real(wp), intent(in) :: u(:,:)
+      logical, intent(in) :: strain
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+    end subroutine add_group_finite_axi
   end interface
 
 contains
@@ -763,12 +814,14 @@ contains
           case (KERN_FINITE_Q8)
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
-          case (KERN_J2_SMALL_Q4:KERN_J2_AXI_Q8)
+          case (KERN_J2_SMALL_Q4:KERN_J2_FINITE_AXI_Q8)
             call j2_chunk(blk, ic, nc, mon, plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_AXI_Q4)
             call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           case (KERN_AXI_Q8)
             call kernel_axi_q8(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
+          case (KERN_FINITE_AXI_Q4, KERN_FINITE_AXI_Q8)
+            call finite_axi_elastic_chunk(blk, ic, nc, mon, ue, fe, en, jm, jel, w2)
           end select
           if (watched .and. reports_energy(blk)) then
             watch%energy(ic) = en
@@ -874,14 +927,15 @@ contains
     type(block_plastic_t), intent(in), optional :: plastic
     integer :: col, k, e, e0, e1, what
     integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 9
-    integer, parameter :: axi_stress = 5, axi_strain = 6
+    integer, parameter :: axi_stress = 5, axi_strain = 6, finite_axi_stress = 7, finite_axi_strain = 8
     what = small_stress
     if (present(strain)) then
       if (strain) what = small_strain
     end if
     if (blk%kinematics == KIN_FINITE) what = what + 2
     if (blk%axisymmetric) what = what + 4
-    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain) then
+    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain &
+        .and. what /= finite_axi_strain) then
       if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
       what = j2_stress
     end if
@@ -915,6 +969,8 @@ contains
           do e = e0, e1
             call add_element_axi(blk, e, u, what == axi_strain, s, wsum)
           end do
+        case (finite_axi_stress, finite_axi_strain)
+          call add_group_finite_axi(blk, blk%colour_group(k), u, what == finite_axi_strain, s, wsum)
         end select
       end do groups
       !$omp end do

@@ -39,7 +39,9 @@ contains
     blk%moduli = make_moduli(blk%young, blk%poisson)
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
     if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
+    if (blk%axisymmetric) blk%kernel = merge(KERN_FINITE_AXI_Q4, KERN_FINITE_AXI_Q8, blk%etype == ELEM_Q4)
     call init_reference_data(blk, x, err)
+    if (blk%axisymmetric .and. .not. err%failed()) call init_finite_axi(blk, err)
   end procedure make_finite
 
   !> The reference data of the finite-strain and j2 kernels: Q4 the exact
@@ -61,7 +63,7 @@ contains
     end if
     ! padding lanes of the last chunk: a unit element, never scattered
     blk%pg = 0.0_wp
-    if (blk%etype /= ELEM_Q4) then
+    if (blk%etype /= ELEM_Q4 .or. blk%axisymmetric) then
       blk%pg(:, 1, :, :) = 1.0_wp
       blk%pg(:, 4, :, :) = 1.0_wp
     end if
@@ -72,7 +74,8 @@ contains
     do e = 1, blk%nel
       ic = (e - 1)/chunk_len + 1
       il = e - (ic - 1)*chunk_len
-      if (blk%etype == ELEM_Q4) then
+      ! (axisymmetric Q4: the Gauss-sum form, from make_axisymmetric's H and c)
+      if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
         call q4_split(blk%geo(:, e), blk%gxi, pq4)
         blk%pg(il, :, :, ic) = pq4
         do g = 1, blk%ngp
@@ -152,6 +155,10 @@ contains
     integer :: ic, e0, nc, l, jel, mat
     w2 = 0.0_wp
     if (blk%kinematics /= KIN_FINITE) return
+    if (blk%axisymmetric) then
+      call finite_axi_w2_elements(blk, w2)
+      return
+    end if
     mat = merge(MAT_NEO_HOOKE, blk%material, blk%material == MAT_J2)
     ue = 0.0_wp
     do ic = 1, blk%nchunk

@@ -39,7 +39,10 @@ contains
       ! H = sqrt(c) J^-1, the hoop factor, and c = w detJ 2 pi r_g here
       ! in chunk layout with V_e = sum_g c
       if (kinematics == KIN_FINITE) then
-        call raise_error(err, EXIT_INPUT, where // 'finite strain is not built for axisymmetric bodies')
+        ! finite strain: the axisymmetric finite kernel (raccord_finite_axi_kernel)
+        blk%kernel = merge(KERN_J2_FINITE_AXI_Q4, KERN_J2_FINITE_AXI_Q8, blk%etype == ELEM_Q4)
+        call init_reference_data(blk, x, err)
+        if (.not. err%failed()) call init_finite_axi(blk, err)
         return
       end if
       blk%kernel = merge(KERN_J2_AXI_Q4, KERN_J2_AXI_Q8, blk%etype == ELEM_Q4)
@@ -139,6 +142,8 @@ contains
     case (KERN_J2_AXI_Q8)
       call kernel_j2_axi_q8(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
         blk%hoop(:, :, ic), blk%cw(:, :, ic), blk%vol0(:, ic), hist, ue, fe, sg, act, en, dis)
+    case (KERN_J2_FINITE_AXI_Q4, KERN_J2_FINITE_AXI_Q8)
+      call finite_axi_chunk(blk, ic, nc, mon, hist, ue, fe, sg, act, en, dis, jm, jel, w2)
     end select
   end procedure j2_chunk
 

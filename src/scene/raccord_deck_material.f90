@@ -71,17 +71,16 @@ contains
         'and material is ''linear_elastic''', 'write material = ''neo_hooke'' (or ''svk'') beside ' // &
         'kinematics = ''finite'', or kinematics = ''small'' for Hooke''s law', err)
     else if (spec%material == MAT_J2 .and. spec%plane_stress) then
-      call bad_value(deck, blk, label, 'hypothesis', 'J2 plasticity is built for plane strain only', &
+      call bad_value(deck, blk, label, 'hypothesis', 'J2 plasticity is built for plane strain only, ' // &
+        'and for axisymmetric bodies', &
         'write hypothesis = ''plane_strain'' for an elastoplastic body', err)
     else if (spec%kinematics == KIN_SMALL .and. spec%material /= MAT_LINEAR .and. spec%material /= MAT_J2) then
       call bad_value(deck, blk, label, 'material', 'material ''' // trim(material) // ''' is a finite-strain law ' // &
         'and kinematics is ''small''', 'write kinematics = ''finite'' beside material = ''' // trim(material) // &
         ''', or material = ''linear_elastic'' for small strain', err)
-    else if (spec%kinematics == KIN_FINITE .and. spec%axisymmetric) then
-      call bad_value(deck, blk, label, 'hypothesis', 'finite strain is not built for axisymmetric bodies yet', &
-        'write kinematics = ''small'' for an axisymmetric body, or model it in plane strain', err)
     else if (spec%kinematics == KIN_FINITE .and. spec%plane_stress) then
-      call bad_value(deck, blk, label, 'hypothesis', 'finite strain is built for plane strain only', &
+      call bad_value(deck, blk, label, 'hypothesis', 'finite strain is built for plane strain only, ' // &
+        'and for axisymmetric bodies', &
         'write hypothesis = ''plane_strain'', or kinematics = ''small'' for a plane-stress body', err)
     else if (spec%kinematics == KIN_SMALL .and. spec%material /= MAT_J2 .and. spec%volumetric /= VOL_AUTO) then
       call bad_value(deck, blk, label, 'volumetric', 'the volumetric treatment is a finite-strain option ' // &
