@@ -32,7 +32,8 @@ module raccord_mortar
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, &
+    cs_add_wrap, G1_MAX_BAND
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
     intersect_ray, multiplier_basis, multiplier_breaks
@@ -115,14 +116,6 @@ contains
       call raise_error(err, EXIT_INPUT, where // ': unknown mortar multiplier space; use ''P1'' or ''P0''.')
       return
     end if
-    if (slave%closed) then
-      ! A closed slave chain would couple its first and last multipliers
-      ! in G1, outside the band that the constraint set keeps.
-      call raise_error(err, EXIT_INPUT, where // ': the slave surface ''' // slave%name // ''' is a closed ' // &
-        'loop; mortar needs an open slave chain. Make the slave surface the part of the boundary that ' // &
-        'may touch (the master may stay closed).')
-      return
-    end if
     w%multiplier = multiplier
     ns = slave%nseg
     nn = slave%nnode
@@ -153,6 +146,9 @@ contains
     do k = 1, ns
       w%pos(1, k) = stride*(k - 1) + 1
       w%pos(2, k) = stride*k + 1
+      ! A closed loop's last segment ends at its first node (no end nodes:
+      ! every node has two segments and its full multiplier support).
+      if (slave%closed .and. k == ns) w%pos(2, k) = 1
       if (slave%nen_seg == 3) w%pos(3, k) = stride*(k - 1) + 2
       do a = 1, slave%nen_seg
         c = w%pos(a, k)
@@ -284,25 +280,53 @@ contains
     end function corner_xi
   end subroutine build_mortar
 
-  !> Constraint rows in chain order from the per-segment integrals.
+  !> Constraint rows in chain order from the per-segment integrals. On a
+  !> closed slave loop the order starts after the longest run of nodes
+  !> without a multiplier, so that a contact arc is numbered in one piece
+  !> and stays banded; a loop in contact all round starts at node 1 and
+  !> the entries of G1 across that seam are kept apart (cs_add_wrap).
   subroutine assemble_rows(slave, xpred, du, vl, w, cs)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: xpred(:,:), du(:,:)
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cmin, cmax
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0
     real(wp) :: v, tol
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
     call cs_start(cs, slave%nnode + 2)
     if (vl%nnear == 0) return
-    ! Chain nodes of the near segments (the others have no overlap).
-    cmin = w%pos(1, vl%near(1))
-    cmax = w%pos(2, vl%near(vl%nnear))
+    if (slave%closed) then
+      ! Every position, cyclically from c0: after the longest run of
+      ! positions without a multiplier (twice round finds runs across
+      ! node 1); node 1 when there is none.
+      npos = slave%nnode
+      c0 = 1
+      run = 0
+      best = 0
+      do q = 1, 2*npos
+        c = modulo(q - 1, npos) + 1
+        if (w%len(c) > tol) then
+          run = 0
+        else
+          run = run + 1
+          if (run > best .and. run < npos) then
+            best = run
+            c0 = modulo(c, npos) + 1
+          end if
+        end if
+      end do
+      cfirst = c0
+    else
+      ! Chain nodes of the near segments (the others have no overlap).
+      cfirst = w%pos(1, vl%near(1))
+      npos = w%pos(2, vl%near(vl%nnear)) - cfirst + 1
+    end if
     m = 0
-    do c = cmin, cmax
+    do q = 1, npos
+      c = at(q)
       if (w%len(c) > tol) then
         m = m + 1
         w%cidx(c) = m
@@ -316,48 +340,60 @@ contains
       end do
     end do
     band = 0
-    do c = cmin, cmax
-      call corner_rows_after(c)
+    do q = 1, npos
+      c = at(q)
       j = w%cidx(c)
-      if (j == 0) cycle
-      call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
-      cs%g1(:, j) = 0.0_wp
-      do t = 1, w%nadj(c)
-        k = w%adj_seg(t, c)
-        b = w%adj_loc(t, c)
-        ! Slave entries -G1(i, j), and the band of G1 between constraints
-        ! (constraint numbering: g1(d, j) = G1(j + d, j)).
-        do ai = 1, nen
-          v = w%g1loc(ai, b, k)
-          if (v == 0.0_wp) cycle
-          call cs_add_entry(cs, slave%seg(ai, k), -v)
-          i = w%cidx(w%pos(ai, k))
-          if (i > 0) then
-            d = i - j
-            cs%g1(d, j) = cs%g1(d, j) + v
-            band = max(band, abs(d))
-          end if
+      if (j > 0) then
+        call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
+        cs%g1(:, j) = 0.0_wp
+        do t = 1, w%nadj(c)
+          k = w%adj_seg(t, c)
+          b = w%adj_loc(t, c)
+          ! Slave entries -G1(i, j), and the band of G1 between constraints
+          ! (constraint numbering: g1(d, j) = G1(j + d, j)).
+          do ai = 1, nen
+            v = w%g1loc(ai, b, k)
+            if (v == 0.0_wp) cycle
+            call cs_add_entry(cs, slave%seg(ai, k), -v)
+            i = w%cidx(w%pos(ai, k))
+            if (i > 0) then
+              d = i - j
+              if (abs(d) <= G1_MAX_BAND) then
+                cs%g1(d, j) = cs%g1(d, j) + v
+                band = max(band, abs(d))
+              else
+                ! Across the seam of a closed loop in contact all round.
+                call cs_add_wrap(cs, i, j, v)
+              end if
+            end if
+          end do
+          ! Master entries +G21(a, j).
+          do e = w%mbeg(k), w%mend(k)
+            if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
+          end do
         end do
-        ! Master entries +G21(a, j).
-        do e = w%mbeg(k), w%mend(k)
-          if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
-        end do
-      end do
-      call cs_finish_row(cs, xpred, du)
+        call cs_finish_row(cs, xpred, du)
+      end if
+      call corner_rows_after(c)
     end do
-    call corner_rows_after(slave%nnode + 1)
     cs%g1_band = band
   contains
-    !> Emit the corner rows that follow chain node c - 1 (called before the
-    !> row of c, so that they land right after c - 1's row, where the
+    !> Chain position of the q-th node in constraint order.
+    integer function at(qq)
+      integer, intent(in) :: qq
+      at = cfirst + qq - 1
+      if (slave%closed) at = modulo(at - 1, slave%nnode) + 1
+    end function at
+
+    !> Emit the corner rows that follow chain node cprev (where the
     !> numbering above reserved their place).
-    subroutine corner_rows_after(cnext)
-      integer, intent(in) :: cnext
+    subroutine corner_rows_after(cprev)
+      integer, intent(in) :: cprev
       integer :: tt, a, kk
       real(wp) :: sh(3), dsh(3)
       do tt = 1, w%ncrow
         kk = w%crow_seg(tt)
-        if (w%pos(1, kk) /= cnext - 1) cycle
+        if (w%pos(1, kk) /= cprev) cycle
         call shape_line(nen, w%crow_xi(tt), sh, dsh)
         ! Constraint index slave%nnode + end, so the pair keeps its state
         ! apart from the slave nodes'.
