@@ -59,7 +59,7 @@ contains
     integer :: i, p, q, k, best, nen, a, tn
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
     real(wp) :: nn(2, 3), dnf(2), sw(4)
-    integer :: k2, sn(4)
+    integer :: k2, sn(4), t0, gap, tt
     ! A foot up to 1 % of a segment beyond the end of the master chain still
     ! counts: a slave node that sits at the master's end (a common corner)
     ! projects a hair beyond it as soon as the end segment tilts.
@@ -71,8 +71,21 @@ contains
     call master_normals(master, x, v, nodal_normal)
     call tributary_lengths(slave, x, trib, v%snear(1:v%nsnear))
     call cs_start(cs, slave%nnode)
+    ! On a closed slave loop, start after the widest gap between near nodes
+    ! (cyclically): a contact arc across the loop's first node is then
+    ! numbered in one piece and its rows stay banded in the solve.
+    t0 = 0
+    if (slave%closed .and. v%nnear > 1) then
+      gap = v%near(1) + slave%nnode - v%near(v%nnear)
+      do tt = 2, v%nnear
+        if (v%near(tt) - v%near(tt - 1) > gap) then
+          gap = v%near(tt) - v%near(tt - 1)
+          t0 = tt - 1
+        end if
+      end do
+    end if
     near_nodes: do tn = 1, v%nnear
-      i = v%near(tn)
+      i = v%near(modulo(tn - 1 + t0, v%nnear) + 1)
       p = slave%node(i)
       xp = x(:, p)
       best = 0

@@ -285,9 +285,9 @@ contains
 
   ! ------------------------------------------------------------ pin in hole
 
-  !> Pin (ring 0.5 .. 0.97, nth x nr/2... see below) in a plate (ring 1 ..
-  !> 3, outer edge clamped), E 1000 both, plane strain; the pin moved by
-  !> the clearance 0.03 in +x so that it touches the hole at theta = 0;
+  !> Pin (ring 0.5 .. 0.97, nth x nr Q4) in a plate (ring 1 .. 3, nth x
+  !> 2 nr Q4, outer edge clamped), E 1000 both, plane strain; the pin moved
+  !> by the clearance 0.03 in +x so that it touches the hole at theta = 0;
   !> a traction q in +x on the pin's bore, ramped over [0, T/2] and held,
   !> the pin's nodes on y = 0 held in y (symmetry). The pin's outer loop is
   !> the slave. Returns the pin's mean x displacement (bore), the resultant
@@ -346,9 +346,9 @@ contains
       r%disp = r%disp + state%u(1, mesh%nsets(is)%nodes(k))
     end do
     r%disp = r%disp/size(mesh%nsets(is)%nodes)
-    ! The bore's traction integrates to Q times its length (2 pi R_BORE),
-    ! all in x.
-    r%load = Q*2.0_wp*pi*R_BORE
+    ! The bore's traction integrates to Q times its length (the polygon of
+    ! nth chords), all in x.
+    r%load = Q*real(nth, wp)*2.0_wp*R_BORE*sin(pi/real(nth, wp))
     r%force = abs(pairs(1)%force(1))
     r%arc = 0.0_wp
     do i = 1, size(pairs(1)%status)
@@ -361,9 +361,10 @@ contains
   end subroutine pin_run
 
   !> Each matching and friction coefficient on 48 x 2 (pin) elements
-  !> against the same on 96 x 4: the pin's displacement within 3 %, the
-  !> contact resultant equal to the load within 1 % (at rest), the contact
-  !> arc within two coarse facet angles (the arc ends between nodes), the
+  !> against the same on 96 x 4: the pin's displacement within 3 % (the
+  !> coarse pin is 2 % stiffer), the contact resultant equal to the load
+  !> within 1e-6 (at rest: measured 2e-10), the contact arc (the last closed node's angle)
+  !> within one coarse facet angle (the arc ends between nodes), the
   !> energy balance exact.
   subroutine test_pin(failure)
     type(failure_t), allocatable, intent(out) :: failure
@@ -376,17 +377,17 @@ contains
         label = trim(MN(m)) // ', mu = ' // merge('0  ', '0.3', f == 1)
         call pin_run(48, 2, ME(m), MU(m), MUS(f), rc)
         call pin_run(96, 4, ME(m), MU(m), MUS(f), rf)
-        write(*, '(8x,a,": coarse / fine: u_pin ",es11.4," / ",es11.4,", F_c/load ",f7.4," / ",f7.4, &
+        write(*, '(8x,a,": coarse / fine: u_pin ",es11.4," / ",es11.4,", F_c/load - 1 ",es9.2," / ",es9.2, &
           & ", arc ",f6.2," / ",f6.2," deg, balance ",es9.2," / ",es9.2)') label, rc%disp, rf%disp, &
-          rc%force/rc%load, rf%force/rf%load, rc%arc*180.0_wp/pi, rf%arc*180.0_wp/pi, rc%bal, rf%bal
+          rc%force/rc%load - 1.0_wp, rf%force/rf%load - 1.0_wp, rc%arc*180.0_wp/pi, rf%arc*180.0_wp/pi, rc%bal, rf%bal
         call check(failure, .not. (rc%failed .or. rf%failed) .and. rc%finite .and. rf%finite, &
           label // ': a run failed or is not finite')
         if (allocated(failure)) return
         call check(failure, max(rc%bal, rf%bal) < 1.0e-10_wp, label // ': energy balance not exact')
         call check(failure, abs(rc%disp - rf%disp) <= 0.03_wp*abs(rf%disp), label // ': pin displacement off the fine mesh')
-        call check(failure, abs(rc%force/rc%load - 1.0_wp) <= 0.01_wp .and. abs(rf%force/rf%load - 1.0_wp) <= 0.01_wp, &
+        call check(failure, abs(rc%force/rc%load - 1.0_wp) <= 1.0e-6_wp .and. abs(rf%force/rf%load - 1.0_wp) <= 1.0e-6_wp, &
           label // ': contact resultant differs from the load at rest')
-        call check(failure, abs(rc%arc - rf%arc) <= 2.0_wp*rc%h_angle, label // ': contact arc off the fine mesh')
+        call check(failure, abs(rc%arc - rf%arc) <= rc%h_angle, label // ': contact arc off the fine mesh')
         if (allocated(failure)) return
       end do
     end do
