@@ -30,6 +30,9 @@
 set -eu
 dir=${1:?usage: pin-hole-ccx.sh DIR}
 ccx=${CCX:-ccx}
+# No result file unless this run makes one (the caller reads its absence as
+# a skip).
+rm -f "$dir/ccx_result.txt"
 if ! command -v "$ccx" > /dev/null 2>&1; then
   echo "pin-hole-ccx: CalculiX (ccx) is not installed; skipping the comparison (Debian: apt-get install calculix-ccx)"
   exit 0
