@@ -16,8 +16,10 @@ module raccord_constraint_set
   implicit none
   private
 
-  integer, parameter, public :: G1_MAX_BAND = 3   !< half bandwidth of G1 kept (P0/P1 on Q4 or Q8 edges, with a mortar corner row between)
-  integer, parameter, public :: G1_MAX_WRAP = 8   !< G1 entries across a closed slave's seam (2 on Q4 edges, 4 on Q8)
+  !> half bandwidth of G1 kept: P0/P1 on Q4 or Q8 edges, with a mortar
+  !> corner row between (3); a closed slave loop in contact all round,
+  !> numbered folded (raccord_mortar, assemble_rows), on Q8 edges (4)
+  integer, parameter, public :: G1_MAX_BAND = 4
 
   type, public :: constraint_set_t
     integer :: m = 0                          !< constraints this step
@@ -27,14 +29,6 @@ module raccord_constraint_set
     real(wp), allocatable :: tangent(:,:)     !< (2, m) normal turned clockwise
     integer :: g1_band = 0                    !< half bandwidth of G1 this step
     real(wp), allocatable :: g1(:,:)          !< (-G1_MAX_BAND:G1_MAX_BAND, m): g1(d, j) = G1(j+d, j)
-    ! Entries of G1 across the seam of a closed slave loop in contact all
-    ! round (mortar): G1(wrap_row(t), wrap_col(t)) = wrap_v(t), |row - col|
-    ! up to m - 1, outside the band above (doc/theory-contact-mortar.md,
-    ! "Closed slave loops").
-    integer :: nwrap = 0
-    integer :: wrap_row(G1_MAX_WRAP) = 0, wrap_col(G1_MAX_WRAP) = 0
-    real(wp) :: wrap_v(G1_MAX_WRAP) = 0.0_wp
-    integer :: g1_span = 0                    !< largest |row - col| of a seam entry
     integer, allocatable :: row_ptr(:)        !< (m+1) start of each row's entries
     integer :: nent = 0
     integer, allocatable :: ent_node(:)
@@ -45,7 +39,7 @@ module raccord_constraint_set
     real(wp), allocatable :: coord(:)         !< reference arc length of the node (for profiles)
   end type constraint_set_t
 
-  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_add_wrap, cs_g1_at, cs_g1_column_sum
+  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row
 
 contains
 
@@ -61,55 +55,8 @@ contains
     cs%m = 0
     cs%nent = 0
     cs%g1_band = 0
-    cs%nwrap = 0
-    cs%g1_span = 0
     cs%row_ptr(1) = 1
   end subroutine cs_start
-
-  !> Add v to G1(i, j) across the seam of a closed slave loop (|i - j| >
-  !> G1_MAX_BAND). Only the slave segment that spans the seam couples
-  !> constraints across it: at most nen (nen - 1) = 6 entries, within
-  !> G1_MAX_WRAP.
-  subroutine cs_add_wrap(cs, i, j, v)
-    type(constraint_set_t), intent(inout) :: cs
-    integer, intent(in) :: i, j
-    real(wp), intent(in) :: v
-    integer :: t
-    do t = 1, cs%nwrap
-      if (cs%wrap_row(t) == i .and. cs%wrap_col(t) == j) then
-        cs%wrap_v(t) = cs%wrap_v(t) + v
-        return
-      end if
-    end do
-    cs%nwrap = cs%nwrap + 1
-    cs%wrap_row(cs%nwrap) = i
-    cs%wrap_col(cs%nwrap) = j
-    cs%wrap_v(cs%nwrap) = v
-    cs%g1_span = max(cs%g1_span, abs(i - j))
-  end subroutine cs_add_wrap
-
-  !> G1(j, k): the band, or a seam entry (0 elsewhere).
-  pure real(wp) function cs_g1_at(cs, j, k) result(g)
-    type(constraint_set_t), intent(in) :: cs
-    integer, intent(in) :: j, k
-    integer :: t
-    g = 0.0_wp
-    if (abs(j - k) <= cs%g1_band) g = cs%g1(j - k, k)
-    do t = 1, cs%nwrap
-      if (cs%wrap_row(t) == j .and. cs%wrap_col(t) == k) g = g + cs%wrap_v(t)
-    end do
-  end function cs_g1_at
-
-  !> sum_i G1(i, j): the integral of psi_j over the overlap.
-  pure real(wp) function cs_g1_column_sum(cs, j) result(g)
-    type(constraint_set_t), intent(in) :: cs
-    integer, intent(in) :: j
-    integer :: t
-    g = sum(cs%g1(:, j))
-    do t = 1, cs%nwrap
-      if (cs%wrap_col(t) == j) g = g + cs%wrap_v(t)
-    end do
-  end function cs_g1_column_sum
 
   !> Open row j = m+1 for slave surface node `snode` (global `gnode`).
   subroutine cs_add_row(cs, snode, gnode, normal, length, coord)

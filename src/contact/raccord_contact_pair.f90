@@ -18,7 +18,7 @@ module raccord_contact_pair
   use raccord_state, only: state_t
   use raccord_contact_surface, only: contact_surface_t, build_contact_surface
   use raccord_contact_verlet, only: verlet_t, verlet_init
-  use raccord_constraint_set, only: constraint_set_t, cs_g1_column_sum
+  use raccord_constraint_set, only: constraint_set_t
   use raccord_multiplier_solver, only: solver_work_t, solve_multipliers, ST_OPEN, ST_STICK, ST_SLIP
   use raccord_node_to_segment, only: build_node_to_segment
   use raccord_mortar, only: mortar_work_t, init_mortar, build_mortar
@@ -372,7 +372,7 @@ contains
       do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
         g0 = g0 - pair%cs%ent_w(e)*dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%normal(:, j))
       end do
-      ov = -g0/cs_g1_column_sum(pair%cs, j)
+      ov = -g0/sum(pair%cs%g1(:, j))
       if (pair%cs%snode(j) > pair%slave%nnode) cycle      ! a master corner, not a slave node
       if (ov > tol) then
         pair%overlap_nodes = pair%overlap_nodes + 1

@@ -32,8 +32,7 @@ module raccord_mortar
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, &
-    cs_add_wrap, G1_MAX_BAND
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
     intersect_ray, multiplier_basis, multiplier_breaks
@@ -282,9 +281,13 @@ contains
 
   !> Constraint rows in chain order from the per-segment integrals. On a
   !> closed slave loop the order starts after the longest run of nodes
-  !> without a multiplier, so that a contact arc is numbered in one piece
-  !> and stays banded; a loop in contact all round starts at node 1 and
-  !> the entries of G1 across that seam are kept apart (cs_add_wrap).
+  !> without a multiplier, so that a contact arc is numbered in one piece;
+  !> a loop with multipliers all round (no run of two such nodes) is
+  !> numbered folded, 1, m, 2, m - 1, ... along the chain, so that its
+  !> neighbours across the seam are neighbours in the numbering too and G1
+  !> and the Delassus operator stay banded (half width doubled) instead of
+  !> coupling the first and last rows (doc/theory-contact.md, section 3,
+  !> "Closed surfaces").
   subroutine assemble_rows(slave, xpred, du, vl, w, cs)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: xpred(:,:), du(:,:)
@@ -292,12 +295,14 @@ contains
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
     integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0
+    logical :: fold
     real(wp) :: v, tol
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
     call cs_start(cs, slave%nnode + 2)
     if (vl%nnear == 0) return
+    fold = .false.
     if (slave%closed) then
       ! Every position, cyclically from c0: after the longest run of
       ! positions without a multiplier (twice round finds runs across
@@ -319,6 +324,9 @@ contains
         end if
       end do
       cfirst = c0
+      ! A run of one node leaves its neighbours sharing a segment (a Q8 mid
+      ! node): fold as for none.
+      fold = best <= 1
     else
       ! Chain nodes of the near segments (the others have no overlap).
       cfirst = w%pos(1, vl%near(1))
@@ -358,13 +366,8 @@ contains
             i = w%cidx(w%pos(ai, k))
             if (i > 0) then
               d = i - j
-              if (abs(d) <= G1_MAX_BAND) then
-                cs%g1(d, j) = cs%g1(d, j) + v
-                band = max(band, abs(d))
-              else
-                ! Across the seam of a closed loop in contact all round.
-                call cs_add_wrap(cs, i, j, v)
-              end if
+              cs%g1(d, j) = cs%g1(d, j) + v
+              band = max(band, abs(d))
             end if
           end do
           ! Master entries +G21(a, j).
@@ -378,10 +381,15 @@ contains
     end do
     cs%g1_band = band
   contains
-    !> Chain position of the q-th node in constraint order.
+    !> Chain position of the q-th node in constraint order: along the
+    !> chain from cfirst, or folded (the chain's q-th node from the start
+    !> for odd q, from the end for even q).
     integer function at(qq)
       integer, intent(in) :: qq
-      at = cfirst + qq - 1
+      integer :: kk
+      kk = qq
+      if (fold) kk = merge((qq + 1)/2, npos - qq/2 + 1, mod(qq, 2) == 1)
+      at = cfirst + kk - 1
       if (slave%closed) at = modulo(at - 1, slave%nnode) + 1
     end function at
 

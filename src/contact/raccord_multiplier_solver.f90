@@ -26,7 +26,7 @@
 !> massive, they take no correction.
 module raccord_multiplier_solver
   use raccord_kinds, only: wp
-  use raccord_constraint_set, only: constraint_set_t, G1_MAX_BAND, cs_g1_at
+  use raccord_constraint_set, only: constraint_set_t, G1_MAX_BAND
   use raccord_band_solver, only: band_solve
   implicit none
   private
@@ -102,10 +102,7 @@ contains
         w%dropped = w%dropped + 1
       end if
     end do
-    ! A closed slave loop in contact all round couples its first and last
-    ! constraints across the seam (g1_span up to m - 1; K does the same):
-    ! the band is then the whole system (doc/theory-contact-mortar.md).
-    bw = max(w%kb, cs%g1_band, cs%g1_span)
+    bw = max(w%kb, cs%g1_band)
     call ensure_i2(w%var, 4, m)
     call ensure_i(w%vfirst, m + 1)
     call ensure1(w%rhs, nu*m)
@@ -227,10 +224,6 @@ contains
         f(j) = f(j) + cs%g1(j - k, k)*v(k)
       end do
     end do
-    ! Entries across the seam of a closed slave loop.
-    do k = 1, cs%nwrap
-      f(cs%wrap_row(k)) = f(cs%wrap_row(k)) + cs%wrap_v(k)*v(cs%wrap_col(k))
-    end do
   end subroutine band_matvec
 
   !> G1(j, k) from the band storage (0 outside the band).
@@ -238,11 +231,7 @@ contains
     type(constraint_set_t), intent(in) :: cs
     integer, intent(in) :: j, k
     g1_at = 0.0_wp
-    if (cs%nwrap > 0) then
-      g1_at = cs_g1_at(cs, j, k)
-    else if (abs(j - k) <= cs%g1_band) then
-      g1_at = cs%g1(j - k, k)
-    end if
+    if (abs(j - k) <= cs%g1_band) g1_at = cs%g1(j - k, k)
   end function g1_at
 
   !> Unknowns for the current sets, constraint by constraint in chain
@@ -304,11 +293,10 @@ contains
     logical, intent(in) :: friction
     integer, intent(in) :: bw, kl, ku
     type(solver_work_t), intent(inout) :: w
-    integer :: j, k, m, r, n, gb
+    integer :: j, k, m, r, n
     real(wp) :: dt2
     m = cs%m
     dt2 = dt*dt
-    gb = max(cs%g1_band, cs%g1_span)
     n = w%vfirst(m + 1) - 1
     w%ab(1:2*kl + ku + 1, 1:n) = 0.0_wp
     do j = 1, m
@@ -331,7 +319,7 @@ contains
       if (w%status(j) /= ST_OPEN) then
         call put(r, r, 1.0_wp)
       else
-        do k = max(1, j - gb), min(m, j + gb)
+        do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
           call put(r, w%var(1, k), g1_at(cs, j, k))
         end do
       end if
@@ -352,12 +340,12 @@ contains
       r = w%var(4, j)
       w%rhs(r) = 0.0_wp
       if (w%status(j) == ST_SLIP) then
-        do k = max(1, j - gb), min(m, j + gb)
+        do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
           call put(r, w%var(3, k), g1_at(cs, j, k))
           call put(r, w%var(1, k), -mu*w%sigma(j)*g1_at(cs, j, k))
         end do
       else
-        do k = max(1, j - gb), min(m, j + gb)
+        do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
           call put(r, w%var(3, k), g1_at(cs, j, k))
         end do
       end if
