@@ -16,7 +16,11 @@ module raccord_constraint_set
   implicit none
   private
 
-  integer, parameter, public :: G1_MAX_BAND = 3   !< half bandwidth of G1 kept (P0/P1 on Q4 or Q8 edges, with a mortar corner row between)
+  !> half bandwidth of G1 kept: P0/P1 on Q4 or Q8 edges, with a mortar
+  !> corner row between (3); a closed slave loop with multipliers all
+  !> round, numbered folded (raccord_mortar, assemble_rows), on Q8 edges
+  !> (4), with the two corner rows of an open master between (6)
+  integer, parameter, public :: G1_MAX_BAND = 6
 
   type, public :: constraint_set_t
     integer :: m = 0                          !< constraints this step

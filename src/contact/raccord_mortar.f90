@@ -115,14 +115,6 @@ contains
       call raise_error(err, EXIT_INPUT, where // ': unknown mortar multiplier space; use ''P1'' or ''P0''.')
       return
     end if
-    if (slave%closed) then
-      ! A closed slave chain would couple its first and last multipliers
-      ! in G1, outside the band that the constraint set keeps.
-      call raise_error(err, EXIT_INPUT, where // ': the slave surface ''' // slave%name // ''' is a closed ' // &
-        'loop; mortar needs an open slave chain. Make the slave surface the part of the boundary that ' // &
-        'may touch (the master may stay closed).')
-      return
-    end if
     w%multiplier = multiplier
     ns = slave%nseg
     nn = slave%nnode
@@ -153,6 +145,9 @@ contains
     do k = 1, ns
       w%pos(1, k) = stride*(k - 1) + 1
       w%pos(2, k) = stride*k + 1
+      ! A closed loop's last segment ends at its first node (no end nodes:
+      ! every node has two segments and its full multiplier support).
+      if (slave%closed .and. k == ns) w%pos(2, k) = 1
       if (slave%nen_seg == 3) w%pos(3, k) = stride*(k - 1) + 2
       do a = 1, slave%nen_seg
         c = w%pos(a, k)
@@ -284,25 +279,62 @@ contains
     end function corner_xi
   end subroutine build_mortar
 
-  !> Constraint rows in chain order from the per-segment integrals.
+  !> Constraint rows in chain order from the per-segment integrals. On a
+  !> closed slave loop the order starts after the longest run of nodes
+  !> without a multiplier, so that a contact arc is numbered in one piece;
+  !> a loop with multipliers all round (no run of two such nodes) is
+  !> numbered folded, 1, m, 2, m - 1, ... along the chain, so that its
+  !> neighbours across the seam are neighbours in the numbering too and G1
+  !> and the Delassus operator stay banded (half width doubled) instead of
+  !> coupling the first and last rows (doc/theory-contact.md, section 3,
+  !> "Closed surfaces").
   subroutine assemble_rows(slave, xpred, du, vl, w, cs)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: xpred(:,:), du(:,:)
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cmin, cmax
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0
+    logical :: fold
     real(wp) :: v, tol
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
     call cs_start(cs, slave%nnode + 2)
     if (vl%nnear == 0) return
-    ! Chain nodes of the near segments (the others have no overlap).
-    cmin = w%pos(1, vl%near(1))
-    cmax = w%pos(2, vl%near(vl%nnear))
+    fold = .false.
+    if (slave%closed) then
+      ! Every position, cyclically from c0: after the longest run of
+      ! positions without a multiplier (twice round finds runs across
+      ! node 1); node 1 when there is none.
+      npos = slave%nnode
+      c0 = 1
+      run = 0
+      best = 0
+      do q = 1, 2*npos
+        c = modulo(q - 1, npos) + 1
+        if (w%len(c) > tol) then
+          run = 0
+        else
+          run = run + 1
+          if (run > best .and. run < npos) then
+            best = run
+            c0 = modulo(c, npos) + 1
+          end if
+        end if
+      end do
+      cfirst = c0
+      ! A run of one node leaves its neighbours sharing a segment (a Q8 mid
+      ! node): fold as for none.
+      fold = best <= 1
+    else
+      ! Chain nodes of the near segments (the others have no overlap).
+      cfirst = w%pos(1, vl%near(1))
+      npos = w%pos(2, vl%near(vl%nnear)) - cfirst + 1
+    end if
     m = 0
-    do c = cmin, cmax
+    do q = 1, npos
+      c = at(q)
       if (w%len(c) > tol) then
         m = m + 1
         w%cidx(c) = m
@@ -316,48 +348,60 @@ contains
       end do
     end do
     band = 0
-    do c = cmin, cmax
-      call corner_rows_after(c)
+    do q = 1, npos
+      c = at(q)
       j = w%cidx(c)
-      if (j == 0) cycle
-      call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
-      cs%g1(:, j) = 0.0_wp
-      do t = 1, w%nadj(c)
-        k = w%adj_seg(t, c)
-        b = w%adj_loc(t, c)
-        ! Slave entries -G1(i, j), and the band of G1 between constraints
-        ! (constraint numbering: g1(d, j) = G1(j + d, j)).
-        do ai = 1, nen
-          v = w%g1loc(ai, b, k)
-          if (v == 0.0_wp) cycle
-          call cs_add_entry(cs, slave%seg(ai, k), -v)
-          i = w%cidx(w%pos(ai, k))
-          if (i > 0) then
-            d = i - j
-            cs%g1(d, j) = cs%g1(d, j) + v
-            band = max(band, abs(d))
-          end if
+      if (j > 0) then
+        call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
+        cs%g1(:, j) = 0.0_wp
+        do t = 1, w%nadj(c)
+          k = w%adj_seg(t, c)
+          b = w%adj_loc(t, c)
+          ! Slave entries -G1(i, j), and the band of G1 between constraints
+          ! (constraint numbering: g1(d, j) = G1(j + d, j)).
+          do ai = 1, nen
+            v = w%g1loc(ai, b, k)
+            if (v == 0.0_wp) cycle
+            call cs_add_entry(cs, slave%seg(ai, k), -v)
+            i = w%cidx(w%pos(ai, k))
+            if (i > 0) then
+              d = i - j
+              cs%g1(d, j) = cs%g1(d, j) + v
+              band = max(band, abs(d))
+            end if
+          end do
+          ! Master entries +G21(a, j).
+          do e = w%mbeg(k), w%mend(k)
+            if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
+          end do
         end do
-        ! Master entries +G21(a, j).
-        do e = w%mbeg(k), w%mend(k)
-          if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
-        end do
-      end do
-      call cs_finish_row(cs, xpred, du)
+        call cs_finish_row(cs, xpred, du)
+      end if
+      call corner_rows_after(c)
     end do
-    call corner_rows_after(slave%nnode + 1)
     cs%g1_band = band
   contains
-    !> Emit the corner rows that follow chain node c - 1 (called before the
-    !> row of c, so that they land right after c - 1's row, where the
+    !> Chain position of the q-th node in constraint order: along the
+    !> chain from cfirst, or folded (the chain's q-th node from the start
+    !> for odd q, from the end for even q).
+    integer function at(qq)
+      integer, intent(in) :: qq
+      integer :: kk
+      kk = qq
+      if (fold) kk = merge((qq + 1)/2, npos - qq/2 + 1, mod(qq, 2) == 1)
+      at = cfirst + kk - 1
+      if (slave%closed) at = modulo(at - 1, slave%nnode) + 1
+    end function at
+
+    !> Emit the corner rows that follow chain node cprev (where the
     !> numbering above reserved their place).
-    subroutine corner_rows_after(cnext)
-      integer, intent(in) :: cnext
+    subroutine corner_rows_after(cprev)
+      integer, intent(in) :: cprev
       integer :: tt, a, kk
       real(wp) :: sh(3), dsh(3)
       do tt = 1, w%ncrow
         kk = w%crow_seg(tt)
-        if (w%pos(1, kk) /= cnext - 1) cycle
+        if (w%pos(1, kk) /= cprev) cycle
         call shape_line(nen, w%crow_xi(tt), sh, dsh)
         ! Constraint index slave%nnode + end, so the pair keeps its state
         ! apart from the slave nodes'.

@@ -59,7 +59,8 @@ contains
     integer :: i, p, q, k, best, nen, a, tn
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
     real(wp) :: nn(2, 3), dnf(2), sw(4)
-    integer :: k2, sn(4)
+    integer :: k2, sn(4), t0, gap, tt
+    logical :: fold
     ! A foot up to 1 % of a segment beyond the end of the master chain still
     ! counts: a slave node that sits at the master's end (a common corner)
     ! projects a hair beyond it as soon as the end segment tilts.
@@ -71,8 +72,28 @@ contains
     call master_normals(master, x, v, nodal_normal)
     call tributary_lengths(slave, x, trib, v%snear(1:v%nsnear))
     call cs_start(cs, slave%nnode)
+    ! On a closed slave loop, start after the widest gap between near nodes
+    ! (cyclically): a contact arc across the loop's first node is then
+    ! numbered in one piece and its rows stay banded in the solve. With
+    ! every node of the loop near (no gap), number them folded, 1, m, 2,
+    ! m - 1, ..., so that the neighbours across the seam are neighbours in
+    ! the numbering too (raccord_mortar, assemble_rows).
+    t0 = 0
+    fold = .false.
+    if (slave%closed .and. v%nnear > 1) then
+      gap = v%near(1) + slave%nnode - v%near(v%nnear)
+      do tt = 2, v%nnear
+        if (v%near(tt) - v%near(tt - 1) > gap) then
+          gap = v%near(tt) - v%near(tt - 1)
+          t0 = tt - 1
+        end if
+      end do
+      fold = gap <= 1
+    end if
     near_nodes: do tn = 1, v%nnear
-      i = v%near(tn)
+      tt = tn
+      if (fold) tt = merge((tn + 1)/2, v%nnear - tn/2 + 1, mod(tn, 2) == 1)
+      i = v%near(modulo(tt - 1 + t0, v%nnear) + 1)
       p = slave%node(i)
       xp = x(:, p)
       best = 0
