@@ -8,12 +8,15 @@ cd "$(dirname "$0")"
 T=2.0e-5        # loading time to maximum indentation (about 40 lowest periods)
 ALPHA=2.5e7     # mass-proportional damping of the block, about 2 omega_1 of the block
 # The disc is not damped: it is driven rigidly from its top, and mass damping
-# on it is a drag alpha*M*v (0.84 N/mm at T = 2e-5 s, 0.03 % of the contact
-# force: doc/scenes.md), not a quasi-static model. Exception, the Fig. 3
-# decks (DISC_ALPHA below): a node that sticks keeps its tangential state
-# for the rest of the load, so the ringing of an undamped disc while the
-# contact zone grows is frozen into the stick tractions as a node-to-node
-# zigzag (4.6 % of the peak at mu = 0.5; doc/reproduction.md, Fig. 3).
+# on it is a drag alpha*M*v (840 N/mm at alpha = ALPHA and the mean speed
+# 0.1581/T, of the order of the contact force during the loading; zero at
+# t = T, where the load is at rest), not a quasi-static model. Exception,
+# the Fig. 3 decks (DISC_ALPHA below): a node that sticks keeps its
+# tangential state for the rest of the load, so the ringing of an undamped
+# disc while the contact zone grows is frozen into the stick tractions as a
+# node-to-node zigzag (4.3 % of the peak at mu = 0.5; doc/reproduction.md,
+# Fig. 3). There the disc gets 2 omega_1 of its own lowest mode (period
+# about 1.3e-6 s: 1.0e7 1/s), a drag of 530 N/mm at most, zero at t = T.
 DISC_ALPHA=
 T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")   # end of the cycle
 # The cycle 0 -> 1 -> 0 follows (1 - cos(pi t/T))/2 sampled at 41 points:
@@ -60,9 +63,11 @@ deck() {
   if [ -n "$DISC_ALPHA" ]; then
     DISCDAMP=", damping = $DISC_ALPHA"
     DISCNOTE="the disc,
-! driven rigidly from its top, is damped too (alpha = $DISC_ALPHA 1/s, a drag of
-! 0.03 % of the contact force): stuck nodes keep the tangential state of
-! their history, and an undamped disc's ringing is frozen into it."
+! driven rigidly from its top, is damped too (alpha = $DISC_ALPHA 1/s, about
+! 2 omega_1 of the disc): stuck nodes keep the tangential state of their
+! history, and an undamped disc's ringing is frozen into it. The damping
+! is a drag alpha*M*v on the disc's motion (at most 530 N/mm, zero at
+! t = T), carried by disc_top: judge the force by block_bottom."
   else
     DISCDAMP=""
     DISCNOTE="the disc,
@@ -132,8 +137,8 @@ deck fig2a_mortar_p1_slave_disc  $F "Fig. 2(a), mortar P1, slave = disc arc"  di
 deck fig2b_mortar_p0_slave_block $F "Fig. 2(b), mortar P0, slave = block top" block_top disc_arc mortar P0 0.0
 deck fig2b_mortar_p0_slave_disc  $F "Fig. 2(b), mortar P0, slave = disc arc"  disc_arc block_top mortar P0 0.0
 # Fig. 3: mortar P0 and P1 with Coulomb friction, slave = block top; the
-# disc damped as the block (see DISC_ALPHA above)
-DISC_ALPHA=$ALPHA
+# disc damped at 2 omega_1 of its own lowest mode (see DISC_ALPHA above)
+DISC_ALPHA=1.0e7
 for mu in 0.1 0.2 0.5; do
   tag=$(echo "$mu" | tr -d .)0
   deck fig3_mortar_p0_mu$tag $F "Fig. 3, mortar P0, mu = $mu, slave = block top" block_top disc_arc mortar P0 $mu
