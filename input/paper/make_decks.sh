@@ -16,7 +16,7 @@ ALPHA=2.5e7     # mass-proportional damping of the block, about 2 omega_1 of the
 # disc while the contact zone grows is frozen into the stick tractions as a
 # node-to-node zigzag (4.3 % of the peak at mu = 0.5; doc/reproduction.md,
 # Fig. 3). There the disc gets 2 omega_1 of its own lowest mode (period
-# about 1.3e-6 s: 1.0e7 1/s), a drag of 530 N/mm at most, zero at t = T.
+# about 1.3e-6 s: 1.0e7 1/s), a drag of 530 N/mm at most, about 0 at t = T.
 DISC_ALPHA=
 T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")   # end of the cycle
 # The cycle 0 -> 1 -> 0 follows (1 - cos(pi t/T))/2 sampled at 41 points:
@@ -66,8 +66,8 @@ deck() {
 ! driven rigidly from its top, is damped too (alpha = $DISC_ALPHA 1/s, about
 ! 2 omega_1 of the disc): stuck nodes keep the tangential state of their
 ! history, and an undamped disc's ringing is frozen into it. The damping
-! is a drag alpha*M*v on the disc's motion (at most 530 N/mm, zero at
-! t = T), carried by disc_top: judge the force by block_bottom."
+! is a drag alpha*M*v on the disc's motion (at most 530 N/mm, about 0 at
+! t = T), carried by disc_top: judge the force by contact1_Fy."
   else
     DISCDAMP=""
     DISCNOTE="the disc,
