@@ -36,13 +36,15 @@ contains
 
   !> Run the deck at `path` (relative paths against RACCORD_SOURCE_DIR when
   !> set, except ./... paths, which stay relative to the working folder) to
-  !> its end, or to t_stop when given.
-  subroutine run_deck(path, run, err, t_stop)
+  !> its end, or to t_stop when given. undamped_body names a body whose
+  !> damping is set to 0 (a test's counter-case of a deck as shipped).
+  subroutine run_deck(path, run, err, t_stop, undamped_body)
     character(len=*), intent(in) :: path
     type(scene_run_t), intent(out) :: run
     type(error_t), intent(inout) :: err
     real(wp), intent(in), optional :: t_stop
-    call prepare_deck(path, run, err)
+    character(len=*), intent(in), optional :: undamped_body
+    call prepare_deck(path, run, err, undamped_body)
     if (err%failed()) return
     do
       call step_predict(run, err)
@@ -59,18 +61,24 @@ contains
 
   !> The phases of the program before its time loop: the scene, the mesh,
   !> the model, the contact pairs, the time plan and the state at t = 0.
-  subroutine prepare_deck(path, run, err)
+  subroutine prepare_deck(path, run, err, undamped_body)
     character(len=*), intent(in) :: path
     type(scene_run_t), intent(out) :: run
     type(error_t), intent(inout) :: err
+    character(len=*), intent(in), optional :: undamped_body
     character(len=512) :: root
     character(len=:), allocatable :: full
-    integer :: length, stat
+    integer :: length, stat, b
     call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
     full = path
     if (stat == 0 .and. path(1:1) /= '/' .and. index(path, './') /= 1) full = trim(root) // '/' // path
     call read_scene(full, run%scene, err)
     if (err%failed()) return
+    if (present(undamped_body)) then
+      do b = 1, size(run%scene%bodies)
+        if (run%scene%bodies(b)%name == undamped_body) run%scene%bodies(b)%damping = 0.0_wp
+      end do
+    end if
     call read_mesh(run%scene%mesh%file, run%mesh, err, run%scene%mesh%format, run%scene%mesh%scale)
     if (err%failed()) return
     call build_model(run%scene, run%mesh, run%model, err)
