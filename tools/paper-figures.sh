@@ -47,7 +47,7 @@ for f in $figs; do
     fig3) d="fig3_mortar_p0_mu010 fig3_mortar_p1_mu010 fig3_mortar_p0_mu020 fig3_mortar_p1_mu020 fig3_mortar_p0_mu050 fig3_mortar_p1_mu050" ;;
     fig4a) d="fig4a_q4_mortar_p1 fig4a_q8_mortar_p1" ;;
     fig4b) d="fig4b_q8_mortar_p0_mu020 fig4b_q8_mortar_p1_mu020" ;;
-    cycle) d="fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block fig3_mortar_p1_mu020" ;;
+    cycle) d="fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block cycle_mortar_p1_mu020" ;;
     numbers) d="fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc
       fig2b_mortar_p0_slave_block fig2b_mortar_p0_slave_disc fig3_mortar_p0_mu010 fig3_mortar_p1_mu010
       fig3_mortar_p0_mu020 fig3_mortar_p1_mu020 fig3_mortar_p0_mu050 fig3_mortar_p1_mu050

@@ -145,6 +145,11 @@ for mu in 0.1 0.2 0.5; do
   deck fig3_mortar_p1_mu$tag $F "Fig. 3, mortar P1, mu = $mu, slave = block top" block_top disc_arc mortar P1 $mu
 done
 DISC_ALPHA=""
+# The load cycle's friction run: the Fig. 3 deck at mu = 0.2 with the disc
+# undamped, whose loading and unloading branches show the dissipation of
+# friction (the damped disc's drag is of the same size; doc/reproduction.md,
+# "The load cycle"). Its stick tractions zigzag: Fig. 3 uses the damped deck.
+deck cycle_mortar_p1_mu020 $F "the load cycle, mortar P1, mu = 0.2, slave = block top, disc undamped" block_top disc_arc mortar P1 0.2
 # Fig. 4(a): Q4 against Q8 with the same interface node spacing, mortar P1, frictionless
 deck fig4a_q4_mortar_p1 paper_q4.msh "Fig. 4(a), Q4, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
 deck fig4a_q8_mortar_p1 paper_q8.msh "Fig. 4(a), Q8, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0

@@ -3,8 +3,7 @@
 # (T -> 2T), for the methods.
 # Ordinate: |contact1_Fy|, the vertical contact force on the slave (its
 # size: the slave is the block or the disc), in N per mm of thickness. Not disc_top_Ry: the driven
-# top also carries the disc's inertia (its ringing) and, in the Fig. 3
-# decks, the drag of the disc's mass damping; nor block_bottom_Ry, which
+# top also carries the disc's inertia (its ringing); nor block_bottom_Ry, which
 # carries the block's damping (doc/reproduction.md, "The load cycle").
 # Abscissa: indentation -disc_top_uy (mm).
 #   gnuplot -e "res='results/paper/runs'; figdir='results/paper/figures'" postproc/paper/cycle.gp
@@ -30,7 +29,7 @@ set key font ',9' spacing 0.9
 # and marker; the markers are placed every few rows with a different
 # interval per run, so that where the lines lie on top of each other the
 # markers of all six still show. Loading: thicker lines; unloading: thin.
-runs = 'fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block fig3_mortar_p1_mu020'
+runs = 'fig1b_nts_slave_block fig1b_nts_slave_disc fig2a_mortar_p1_slave_block fig2a_mortar_p1_slave_disc fig2b_mortar_p0_slave_block cycle_mortar_p1_mu020'
 t1 = 'NTS, slave = block'; t2 = 'NTS, slave = disc'; t3 = 'mortar P1, slave = block'
 t4 = 'mortar P1, slave = disc'; t5 = 'mortar P0, slave = block'; t6 = 'mortar P1, {/Symbol m} = 0.2'
 colour(k) = word('#000000 #e69f00 #0072b2 #d55e00 #009e73 #cc79a7', k)
