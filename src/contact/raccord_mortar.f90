@@ -49,6 +49,17 @@ module raccord_mortar
   ! A multiplier whose overlap integral is below this fraction of the
   ! shortest slave segment does not become a constraint.
   real(wp), parameter :: LEN_TOL = 1.0e-9_wp
+  ! A slave node that does not itself face the master, and whose
+  ! multiplier meets the overlap over less than this fraction of its full
+  ! weight (the integral of psi_j over its segments), does not become a
+  ! constraint. Its nodal gap (G1^-1 g_w)_j would be the gap of a sliver
+  ! at the far end of its support extrapolated to the node (by a factor
+  ! of about 1/(2 sqrt(fraction)) for P1): such a node, far from contact,
+  ! was found closed with multipliers of 1e10-1e13 (G1_jj ~ 1e-10) and
+  ! gave the bodies energy in single steps (doc/theory-contact-mortar.md,
+  ! section 7). Its sliver stays constrained through the neighbour whose
+  ! multiplier covers it; its own slave entries stay in the other rows.
+  real(wp), parameter :: RHO_MIN = 1.0e-3_wp
   ! A slave node counts as facing the master when its parameter lies in an
   ! overlap to within this (matching ends meet at +-1 up to round-off).
   real(wp), parameter :: XI_COVER = 1.0e-8_wp
@@ -279,7 +290,10 @@ contains
     end function corner_xi
   end subroutine build_mortar
 
-  !> Constraint rows in chain order from the per-segment integrals. On a
+  !> Constraint rows in chain order from the per-segment integrals. A
+  !> chain node is a constraint when its multiplier meets the overlap
+  !> (integral above LEN_TOL h_min) and either the node itself faces the
+  !> master or that integral is at least RHO_MIN of its full weight. On a
   !> closed slave loop the order starts after the longest run of nodes
   !> without a multiplier, so that a contact arc is numbered in one piece;
   !> a loop with multipliers all round (no run of two such nodes) is
@@ -335,7 +349,7 @@ contains
     m = 0
     do q = 1, npos
       c = at(q)
-      if (w%len(c) > tol) then
+      if (w%len(c) > tol .and. (w%covered(c) .or. w%len(c) >= RHO_MIN*full_weight(c))) then
         m = m + 1
         w%cidx(c) = m
       else
@@ -392,6 +406,27 @@ contains
       at = cfirst + kk - 1
       if (slave%closed) at = modulo(at - 1, slave%nnode) + 1
     end function at
+
+    !> Integral of psi_c over the whole of its slave segments, the weight
+    !> its multiplier has where its support faces the master: 1/2 of a
+    !> 2-node edge, 1/4 (corner) or 1/2 (mid node) of a 3-node edge, for P1
+    !> and P0 alike; chord lengths of the predicted positions (a threshold
+    !> only); axisymmetric: times 2 pi r at the segment's middle.
+    real(wp) function full_weight(cc) result(wf)
+      integer, intent(in) :: cc
+      integer :: tt, kk
+      real(wp) :: xa(2), xb(2), frac
+      wf = 0.0_wp
+      do tt = 1, w%nadj(cc)
+        kk = w%adj_seg(tt, cc)
+        xa = xpred(:, slave%seg(1, kk))
+        xb = xpred(:, slave%seg(2, kk))
+        frac = 0.5_wp
+        if (nen == 3 .and. w%adj_loc(tt, cc) /= 3) frac = 0.25_wp
+        if (slave%axisymmetric) frac = frac*pi*abs(xa(1) + xb(1))
+        wf = wf + frac*norm2(xb - xa)
+      end do
+    end function full_weight
 
     !> Emit the corner rows that follow chain node cprev (where the
     !> numbering above reserved their place).

@@ -118,7 +118,9 @@ contains
   !> way, the balance stays small, the block pushes the die up and drags it
   !> back (the support's reaction is (+Fx, -Fy): it pulls the die to the
   !> right and down), Fx/Fy of the order of mu, smooth reactions, and the
-  !> contact gives back at most 5 % of what friction dissipates.
+  !> contact gives back at most 3 % of what friction dissipates (measured:
+  !> mortar 1.8 %, 0.021 of 1.14, in single steps at the contact edge late
+  !> in the press; node-to-segment 0; doc/theory-contact.md section 7).
   subroutine check_slide(r, what, failure)
     type(ironing_t), intent(in) :: r
     character(len=*), intent(in) :: what
@@ -131,7 +133,7 @@ contains
       str(r%fx/abs(r%fy)))
     call check(failure, r%sy < 0.1_wp*abs(r%fy), what // ': Fy oscillates by ' // str(r%sy) // ' around ' // str(r%fy))
     call check(failure, r%sx < 0.25_wp*r%fx, what // ': Fx oscillates by ' // str(r%sx) // ' around ' // str(r%fx))
-    call check(failure, r%friction > 0.0_wp .and. -r%contact_min < 0.05_wp*r%friction, what // &
+    call check(failure, r%friction > 0.0_wp .and. -r%contact_min < 0.03_wp*r%friction, what // &
       ': contact gave ' // str(-r%contact_min) // ' against friction work ' // str(r%friction))
   end subroutine check_slide
 

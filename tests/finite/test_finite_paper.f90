@@ -115,8 +115,11 @@ contains
   !> trapezoidal work of the internal force matches W only to O(dt^2), not
   !> to round-off as in small strain, where the paper tests assert 1e-10;
   !> a wrong stored energy or force is off by far more), contact never
-  !> gives the bodies more than 1e-3 of the peak internal energy (measured
-  !> -6.8e-7), and the layer, unloaded, gives back its stored energy (less
+  !> gives the bodies more than 1e-5 of the peak internal energy (measured
+  !> -6.8e-7; the same deck on the fine mesh, input/paper/
+  !> finite_mortar_p1_slave_block.nml, gave 1.1e-2 of the energy scale
+  !> through far nodes closed on slivers of the overlap, now 1.5e-5: doc/
+  !> theory-contact-mortar.md section 7), and the layer, unloaded, gives back its stored energy (less
   !> than 1e-2 of the peak left at the end; measured 3e-5).
   subroutine test_cycle(failure)
     type(failure_t), allocatable, intent(out) :: failure
@@ -131,8 +134,8 @@ contains
       ' of the peak internal energy ' // str(run%max_internal, 5) // ', internal at the end ' // &
       str(run%state%energy%internal/run%max_internal, 3) // ' of it; ' // str(run%state%step) // ' steps'
     call check(failure, run%worst_balance < 1.0e-5_wp, 'energy balance ' // str(run%worst_balance))
-    call check(failure, run%min_contact_work > -1.0e-3_wp*run%max_internal, &
-      'contact gave the bodies more than 1e-3 of the peak internal energy')
+    call check(failure, run%min_contact_work > -1.0e-5_wp*run%max_internal, &
+      'contact gave the bodies more than 1e-5 of the peak internal energy')
     call check(failure, run%state%energy%internal < 1.0e-2_wp*run%max_internal, &
       'the unloaded layer kept ' // str(run%state%energy%internal/run%max_internal) // ' of its peak energy')
     call check(failure, run%pairs(1)%failed_total == 0, 'unconverged multiplier steps')

@@ -142,11 +142,12 @@ contains
 
   !> The energy account of the explicit run closes with the plastic work
   !> as its own term (worst balance over the run below 1e-4 of the energy
-  !> scale: measured 6e-6); contact never gives the bodies more than 3e-3
-  !> of the peak internal energy (measured 2.0e-3: in single steps where
-  !> a node at the edge of the flattened contact zone enters contact, the
-  !> contact work drops by up to 0.22 N mm; 1e-4 on the fine mesh; the
-  !> elastic paper tests hold 1e-3, doc/reproduction.md); and the work,
+  !> scale: measured 1.2e-7); contact never gives the bodies more than 1e-5
+  !> of the peak internal energy (measured 7.3e-7; 2.0e-3 before the
+  !> mortar rows of nodes whose multiplier barely meets the overlap were
+  !> dropped: a block-top node far from the disc closed with a multiplier
+  !> of 4e12 and the contact work fell by 0.22 N mm in one step,
+  !> doc/theory-contact-mortar.md section 7); and the work,
   !> the plastic work plus what the layer still stores (residual stresses)
   !> and its kinetic energy, equals CalculiX's work of the disc-top force
   !> over the cycle within 2 % (measured 0.4 %; a 4x slower load moves it
@@ -169,8 +170,8 @@ contains
         str(left/CCX_WORK - 1.0_wp, 3) // ')'
       call check(failure, run%worst_balance < 1.0e-4_wp, 'energy balance ' // str(run%worst_balance))
       call check(failure, e%plastic > plastic_t .and. plastic_t > 0.0_wp, 'plastic work not positive and growing')
-      call check(failure, run%min_contact_work > -3.0e-3_wp*run%max_internal, 'contact gave the bodies ' // &
-        str(-run%min_contact_work) // ', more than 3e-3 of the peak internal energy ' // str(run%max_internal))
+      call check(failure, run%min_contact_work > -1.0e-5_wp*run%max_internal, 'contact gave the bodies ' // &
+        str(-run%min_contact_work) // ', more than 1e-5 of the peak internal energy ' // str(run%max_internal))
       call check(failure, abs(left/CCX_WORK - 1.0_wp) < WORK_TOL, 'work left in the layer ' // str(left) // &
         ', CalculiX ' // str(CCX_WORK))
     end associate
