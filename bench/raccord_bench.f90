@@ -41,7 +41,7 @@ program raccord_bench
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force, make_finite, &
     block_watch_t, init_watch, make_axisymmetric, make_plastic, block_plastic_t, init_plastic
   use raccord_material, only: MAT_NEO_HOOKE, MAT_J2, VOL_FULL, VOL_MEAN, KIN_SMALL, KIN_FINITE
-  use raccord_plasticity, only: j2_t
+  use raccord_plasticity, only: j2_t, h_ebar
   use raccord_model, only: model_t, set_model_threads
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
@@ -233,7 +233,7 @@ contains
     integer :: nx, stat, nel, nnode, nthr(2), nt, k
     integer(i8) :: steps(2)
     real(wp) :: kern(max_repeat, 2), step(max_repeat, 2), split(3, max_repeat, 2), mem_kern, mem_step, balance
-    real(wp) :: ceil_spd, t_alone, t_each
+    real(wp) :: ceil_spd, t_alone, t_each, yshare(2, 2)
     character(len=:), allocatable :: label
 
     label = element_name(etype) // trim(merge('p', ' ', plastic)) // trim(merge('f', ' ', finite)) // &
@@ -265,7 +265,7 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    call bench_internal_force(blk, x, nthr(1:nt), min_time, nrep, kern)
+    call bench_internal_force(blk, x, nthr(1:nt), min_time, nrep, kern, yshare(:, 1))
     mem_kern = real(peak_memory_kib(), wp)/1024.0_wp
     deallocate(blk)
 
@@ -276,7 +276,7 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    call bench_step(model, nthr(1:nt), min_time, nrep, steps, step, split, balance)
+    call bench_step(model, nthr(1:nt), min_time, nrep, steps, step, split, balance, yshare(:, 2))
     mem_step = real(peak_memory_kib(), wp)/1024.0_wp
     ! phase 3: what the machine gives T serial runs at once
     if (nt > 1) call bench_ceiling(model, nthreads, min_time, nrep, ceil_spd, t_alone, t_each)
@@ -290,6 +290,9 @@ contains
         median(kern(1:nrep, 1)/kern(1:nrep, k)), median(step(1:nrep, 1)/step(1:nrep, k)), &
         mem_kern, mem_step, mem_kern*1048576.0_wp/real(nel, wp), balance
     end do
+    if (plastic) write(output_unit, '(a, 4(f0.1, a))') '# ' // label // ' at the end: elements yielded (ebar > 0) ', &
+      yshare(1, 1), ' % (kernel), ', yshare(1, 2), ' % (step); chunks never yielded ', yshare(2, 1), ' %, ', &
+      yshare(2, 2), ' %'
     ! The threaded step against T serial runs at once: the throughput of
     ! each (one step per t_each/T ns per element between them) is what the
     ! hardware gives when every core is busy, whatever the serial time.
@@ -308,11 +311,13 @@ contains
   !> that a change of the machine's load hits both alike), each timing
   !> repeating the call until min_time has passed (at least 3 calls, after
   !> one warm-up call); ns(r, k) ns per element per call.
-  subroutine bench_internal_force(blk, x, nthr, min_time, nrep, ns)
+  subroutine bench_internal_force(blk, x, nthr, min_time, nrep, ns, yshare)
     type(elastic_block_t), intent(inout) :: blk
     real(wp), intent(in) :: x(:,:), min_time
     integer, intent(in) :: nthr(:), nrep
     real(wp), intent(out) :: ns(:,:)
+    !> j2: per cent of the elements yielded and of the chunks never yielded
+    real(wp), intent(out) :: yshare(2)
     real(wp), allocatable :: u(:,:), f(:,:)
     real(wp) :: t0, t
     integer :: calls, r, k
@@ -344,6 +349,8 @@ contains
         ns(r, k) = 1.0e9_wp*t/(real(calls, wp)*real(blk%nel, wp))
       end do thread_counts
     end do repetitions
+    yshare = 0.0_wp
+    if (blk%material == MAT_J2) yshare = yield_share(plastic, blk%nel)
     ! keep the result alive so the calls cannot be optimised away
     if (.not. (abs(sum(f)) < huge(1.0_wp))) write(output_unit, '(a)') '# non-finite internal force'
   end subroutine bench_internal_force
@@ -357,12 +364,14 @@ contains
   !> update_energy + advance_state; steps(k) the steps timed on nthr(k).
   !> balance: the relative energy balance at the end (round-off for this
   !> undamped linear model, so a wrong kernel shows up here).
-  subroutine bench_step(model, nthr, min_time, nrep, steps, ns, split, balance)
+  subroutine bench_step(model, nthr, min_time, nrep, steps, ns, split, balance, yshare)
     type(model_t), intent(inout) :: model
     integer, intent(in) :: nthr(:), nrep
     real(wp), intent(in) :: min_time
     integer(i8), intent(out) :: steps(:)
     real(wp), intent(out) :: ns(:,:), split(:,:,:), balance
+    !> j2: per cent of the elements yielded and of the chunks never yielded
+    real(wp), intent(out) :: yshare(2)
     type(state_t) :: state
     real(wp) :: t0, t1, t2, t3, tf, tp, tr, scale
     integer :: r, n, k
@@ -401,7 +410,20 @@ contains
       end do thread_counts
     end do repetitions
     balance = state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
+    yshare = 0.0_wp
+    if (allocated(state%plastic(1, 1)%h)) yshare = yield_share(state%plastic(1, 1), model%nelem)
   end subroutine bench_step
+
+  !> Per cent of the nel elements with ebar > 0 at a Gauss point, and of the
+  !> chunks still virgin (their internal variables all 0: the small-strain
+  !> kernel skips their return while they stay elastic).
+  function yield_share(plastic, nel) result(share)
+    type(block_plastic_t), intent(in) :: plastic
+    integer, intent(in) :: nel
+    real(wp) :: share(2)
+    share(1) = 100.0_wp*real(count(any(plastic%h(:, h_ebar, :, :) > 0.0_wp, dim=2)), wp)/real(nel, wp)
+    share(2) = 100.0_wp*real(count(plastic%virgin), wp)/real(size(plastic%virgin), wp)
+  end function yield_share
 
   !> The machine's ceiling for the step's speed-up: T serial runs of the
   !> same model at once (one per thread, each on its own copy of the model),
