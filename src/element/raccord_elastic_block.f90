@@ -141,9 +141,6 @@ module raccord_elastic_block
     ! Q4 only
     real(wp), allocatable, private :: q4(:,:,:)      !< (chunk_len, nq4, nchunk) hot kernel data (eqs. 6.2-6.5)
     real(wp), allocatable, private :: geo(:,:)       !< (ngeo, nel) map coefficients (eq. 6.2), cold
-    !> (chunk_len, ngeo, nchunk) the same in chunk layout, the small-strain
-    !> J2 Q4 kernel's only reference data (raccord_plastic_kernel)
-    real(wp), allocatable, private :: gq(:,:,:)
     ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness

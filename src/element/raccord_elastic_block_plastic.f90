@@ -4,7 +4,7 @@
 !> parent declares are defined here with `module procedure`.
 submodule (raccord_elastic_block) raccord_elastic_block_plastic
   use raccord_plasticity, only: j2_initial_history, h_ebar
-  use raccord_plastic_kernel, only: kernel_j2_small_q4_map, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8, &
+  use raccord_plastic_kernel, only: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8, &
     kernel_j2_axi_q4, kernel_j2_axi_q8
   implicit none
 
@@ -47,30 +47,11 @@ contains
     else if (kinematics == KIN_FINITE) then
       blk%kernel = merge(KERN_J2_FINITE_Q4, KERN_J2_FINITE_Q8, blk%etype == ELEM_Q4)
       call init_reference_data(blk, x, err)
-    else if (blk%etype == ELEM_Q4) then
-      ! the kernel computes its reference data from the map, per chunk
-      blk%kernel = KERN_J2_SMALL_Q4
-      call map_chunks(blk)
     else
-      blk%kernel = KERN_J2_SMALL_Q8
+      blk%kernel = merge(KERN_J2_SMALL_Q4, KERN_J2_SMALL_Q8, blk%etype == ELEM_Q4)
       call init_reference_data(blk, x, err)
     end if
   contains
-    !> The Q4 map coefficients in chunk layout (padding lanes: the unit
-    !> square's, never scattered).
-    subroutine map_chunks(b)
-      type(elastic_block_t), intent(inout) :: b
-      integer :: e, ic, il
-      allocate(b%gq(chunk_len, ngeo, b%nchunk))
-      b%gq = 0.0_wp
-      b%gq(:, 1, :) = 0.5_wp
-      b%gq(:, 5, :) = 0.5_wp
-      do e = 1, b%nel
-        ic = (e - 1)/chunk_len + 1
-        il = e - (ic - 1)*chunk_len
-        b%gq(il, :, ic) = b%geo(:, e)
-      end do
-    end subroutine map_chunks
     !> c and V_e of an axisymmetric block in the kernels' chunk layout
     !> (padding lanes: c = 1, never scattered).
     subroutine axi_weights(b)
@@ -147,8 +128,9 @@ contains
     w2 = 0.0_wp
     select case (blk%kernel)
     case (KERN_J2_SMALL_Q4)
-      call kernel_j2_small_q4_map(nc, blk%moduli, blk%j2, mean, blk%gxi, blk%wts, blk%gq(:, :, ic), blk%thickness, &
-        hist, virgin, ue, fe, sg, act, en, dis)
+      call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, virgin, ue, fe, sg, act, en, dis, &
+        jm, jel, w2)
     case (KERN_J2_SMALL_Q8)
       call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
         blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, virgin, ue, fe, sg, act, en, dis, &

@@ -35,7 +35,7 @@ module raccord_plastic_kernel
   implicit none
   private
 
-  public :: kernel_j2_small_q4, kernel_j2_small_q4_map, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
+  public :: kernel_j2_small_q4, kernel_j2_small_q8, kernel_j2_finite_q4, kernel_j2_finite_q8
   public :: kernel_j2_axi_q4, kernel_j2_axi_q8
 
   integer, parameter :: max_nen = 8, max_gp = 9
@@ -60,76 +60,6 @@ contains
     logical, parameter :: split = .true., finite = .false.
     include 'raccord_plastic_kernel_body.inc'
   end subroutine kernel_j2_small_q4
-
-  !> kernel_j2_small_q4 on the map coefficients of the chunk's elements
-  !> instead of the stored reference data: gq(:, 1:6) = (a_x, b_x, c_x, a_y,
-  !> b_y, c_y) of x(xi, eta) = x0 + a xi + b eta + c xi eta (theory-elements
-  !> eq. 6.2), 6 reals per element read instead of 21 (the split's b, gamma,
-  !> grad_X h at the 4 points, c and V_e), which the chunk computes here, in
-  !> cache, as q4_split and q4_detj do (raccord_elastic_block_finite; the
-  !> same values to round-off): 5 divisions per element against 120 bytes
-  !> of memory traffic (doc/performance.md). gxi, wts: the Gauss points and
-  !> weights. Small strain only (no monitor: jmin = 1, w2 = 0).
-  pure subroutine kernel_j2_small_q4_map(nc, m, j2, mean, gxi, wts, gq, thickness, hist, virgin, ue, fe, sg, act, &
-      energy, dissip)
-    integer, intent(in) :: nc
-    type(moduli_t), intent(in) :: m
-    type(j2_t), intent(in) :: j2
-    logical, intent(in) :: mean
-    real(wp), intent(in) :: gxi(2, 4), wts(4), gq(fin_chunk_len, 6), thickness
-    real(wp), intent(inout) :: hist(fin_chunk_len, nhist, 4)
-    logical, intent(inout) :: virgin
-    real(wp), intent(in) :: ue(fin_chunk_len, 2, max_nen)
-    real(wp), intent(inout) :: fe(fin_chunk_len, 2, max_nen)
-    real(wp), intent(out) :: sg(fin_chunk_len, 4, 4), act(fin_chunk_len), energy, dissip
-    real(wp) :: pg(fin_chunk_len, 4, 4), cw(fin_chunk_len, 4), vol0(fin_chunk_len), dn(2, 4, 4)
-    real(wp) :: diag(fin_chunk_len, 4), rinv(fin_chunk_len), jm, w2, wt(4)
-    real(wp) :: ax, bx, cx, ay, by, cy, r, bx1, bx2, by1, by2, j0, j1, j2c, detj, xi, eta
-    integer :: i, g, jel
-    dn = 0.0_wp
-    diag(1:nc, :) = 1.0_wp
-    rinv(1:nc) = 1.0_wp
-    wt = wts*thickness
-    do i = 1, nc
-      ax = gq(i, 1)
-      bx = gq(i, 2)
-      cx = gq(i, 3)
-      ay = gq(i, 4)
-      by = gq(i, 5)
-      cy = gq(i, 6)
-      ! b_a = grad N_a at the centre (b_3 = -b_1, b_4 = -b_2), gamma_a (eq. 6.3)
-      r = 1.0_wp/(4.0_wp*(ax*by - bx*ay))
-      bx1 = (ay - by)*r
-      by1 = (bx - ax)*r
-      bx2 = (ay + by)*r
-      by2 = -(ax + bx)*r
-      pg(i, 1, 1) = bx1
-      pg(i, 2, 1) = bx2
-      pg(i, 3, 1) = by1
-      pg(i, 4, 1) = by2
-      pg(i, 1, 2) = 0.25_wp - cx*bx1 - cy*by1
-      pg(i, 2, 2) = -0.25_wp - cx*bx2 - cy*by2
-      pg(i, 3, 2) = 0.25_wp + cx*bx1 + cy*by1
-      pg(i, 4, 2) = -0.25_wp + cx*bx2 + cy*by2
-      ! det J linear in (xi, eta) (q4_detj); grad_X h = J^-T (eta, xi)
-      j0 = ax*by - bx*ay
-      j1 = ax*cy - cx*ay
-      j2c = cx*by - bx*cy
-      vol0(i) = 0.0_wp
-      do g = 1, 4
-        xi = gxi(1, g)
-        eta = gxi(2, g)
-        detj = j0 + xi*j1 + eta*j2c
-        r = 1.0_wp/detj
-        pg(i, q4h_row(g), q4h_col(g)) = ((by + cy*xi)*eta - (ay + cy*eta)*xi)*r
-        pg(i, q4h_row(g) + 1, q4h_col(g)) = ((ax + cx*eta)*xi - (bx + cx*xi)*eta)*r
-        cw(i, g) = wt(g)*detj
-        vol0(i) = vol0(i) + cw(i, g)
-      end do
-    end do
-    call kernel_j2_small_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, .false., hist, virgin, ue, fe, &
-      sg, act, energy, dissip, jm, jel, w2)
-  end subroutine kernel_j2_small_q4_map
 
   pure subroutine kernel_j2_small_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
       hist, virgin, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
