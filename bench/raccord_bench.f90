@@ -41,11 +41,11 @@ program raccord_bench
   use raccord_elastic_block, only: elastic_block_t, init_elastic_block, add_internal_force, make_finite, &
     block_watch_t, init_watch, make_axisymmetric, make_plastic, block_plastic_t, init_plastic
   use raccord_material, only: MAT_NEO_HOOKE, MAT_J2, VOL_FULL, VOL_MEAN, KIN_SMALL, KIN_FINITE
-  use raccord_plasticity, only: j2_t
+  use raccord_plasticity, only: j2_t, h_ebar
   use raccord_model, only: model_t, set_model_threads
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
-  use raccord_bench_util, only: structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, &
+  use raccord_bench_util, only: use_cpu_time, structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, &
     median, load_average
   !$ use omp_lib, only: omp_get_num_procs
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
@@ -59,8 +59,13 @@ program raccord_bench
   call parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, kin_step, mat0, mat1, &
     stat)
   if (stat /= 0) error stop 1
+  if (use_cpu_time .and. nthreads /= 1) then
+    write(error_unit, '(a)') 'raccord_bench: --cpu-time sums the time of all threads; use it with --threads 1'
+    error stop 1
+  end if
 
   write(output_unit, '(a)') '# raccord_bench: ns per element per call (kernel) / per step (step),'
+  if (use_cpu_time) write(output_unit, '(a)') '# timed in processor time of the process (--cpu-time), not wall clock'
   write(output_unit, '(a, i0, a)') '# min and median of ', nrep, &
     ' rounds; step split: forces / predictor / rest'
   write(output_unit, '(a, i0, a)') '# threads: 1 and ', nthreads, ' (OpenMP; colour-ordered groups of ' // &
@@ -87,7 +92,7 @@ contains
 
   subroutine usage()
     write(output_unit, '(a)') 'usage: raccord_bench [--type q4|q8|all] [--kinematics small|finite|all|axi|small-axi] ' // &
-      '[--material elastic|j2|all] [--threads T] [--min-time SECONDS] [--repeat N] [NEL ...]'
+      '[--material elastic|j2|all] [--threads T] [--min-time SECONDS] [--repeat N] [--cpu-time] [NEL ...]'
     write(output_unit, '(a)') '  --kinematics: small strain (default), finite strain (neo-Hooke; type Q4f, Q8f) or both;'
     write(output_unit, '(a)') '    axi: small-strain axisymmetric (type Q4a, Q8a); small-axi: plane strain, then axisymmetric'
     write(output_unit, '(a)') '  --material: elastic (default), J2 plasticity (type Q4p, Q4pf, ...; not with axi) or both'
@@ -95,6 +100,8 @@ contains
     write(output_unit, '(a)') '  --threads: the thread count compared with 1 (default OMP_NUM_THREADS if set, ' // &
       'else the cores)'
     write(output_unit, '(a)') '  --min-time: least duration of one timing (default 0.3 s); --repeat: timings (default 5)'
+    write(output_unit, '(a)') '  --cpu-time: time by the processor time of the process instead of the wall clock ' // &
+      '(1 thread only: a loaded machine)'
   end subroutine usage
 
   subroutine parse_command_line(types, ntypes, sizes, nsizes, min_time, nrep, nthreads, kin0, kin1, kin_step, &
@@ -190,6 +197,8 @@ contains
           stat = 1
           return
         end if
+      case ('--cpu-time')
+        use_cpu_time = .true.
       case ('--repeat')
         k = k + 1
         call get_command_argument(k, arg)
@@ -233,7 +242,7 @@ contains
     integer :: nx, stat, nel, nnode, nthr(2), nt, k
     integer(i8) :: steps(2)
     real(wp) :: kern(max_repeat, 2), step(max_repeat, 2), split(3, max_repeat, 2), mem_kern, mem_step, balance
-    real(wp) :: ceil_spd, t_alone, t_each
+    real(wp) :: ceil_spd, t_alone, t_each, yshare(2, 2)
     character(len=:), allocatable :: label
 
     label = element_name(etype) // trim(merge('p', ' ', plastic)) // trim(merge('f', ' ', finite)) // &
@@ -265,7 +274,7 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    call bench_internal_force(blk, x, nthr(1:nt), min_time, nrep, kern)
+    call bench_internal_force(blk, x, nthr(1:nt), min_time, nrep, kern, yshare(:, 1))
     mem_kern = real(peak_memory_kib(), wp)/1024.0_wp
     deallocate(blk)
 
@@ -276,7 +285,7 @@ contains
       write(error_unit, '(a)') 'raccord_bench: ' // err%message
       return
     end if
-    call bench_step(model, nthr(1:nt), min_time, nrep, steps, step, split, balance)
+    call bench_step(model, nthr(1:nt), min_time, nrep, steps, step, split, balance, yshare(:, 2))
     mem_step = real(peak_memory_kib(), wp)/1024.0_wp
     ! phase 3: what the machine gives T serial runs at once
     if (nt > 1) call bench_ceiling(model, nthreads, min_time, nrep, ceil_spd, t_alone, t_each)
@@ -290,6 +299,9 @@ contains
         median(kern(1:nrep, 1)/kern(1:nrep, k)), median(step(1:nrep, 1)/step(1:nrep, k)), &
         mem_kern, mem_step, mem_kern*1048576.0_wp/real(nel, wp), balance
     end do
+    if (plastic) write(output_unit, '(a, 4(f0.2, a))') '# ' // label // ' at the end: elements yielded (ebar > 0) ', &
+      yshare(1, 1), ' % (kernel), ', yshare(1, 2), ' % (step); chunks never yielded ', yshare(2, 1), ' %, ', &
+      yshare(2, 2), ' %'
     ! The threaded step against T serial runs at once: the throughput of
     ! each (one step per t_each/T ns per element between them) is what the
     ! hardware gives when every core is busy, whatever the serial time.
@@ -308,11 +320,13 @@ contains
   !> that a change of the machine's load hits both alike), each timing
   !> repeating the call until min_time has passed (at least 3 calls, after
   !> one warm-up call); ns(r, k) ns per element per call.
-  subroutine bench_internal_force(blk, x, nthr, min_time, nrep, ns)
+  subroutine bench_internal_force(blk, x, nthr, min_time, nrep, ns, yshare)
     type(elastic_block_t), intent(inout) :: blk
     real(wp), intent(in) :: x(:,:), min_time
     integer, intent(in) :: nthr(:), nrep
     real(wp), intent(out) :: ns(:,:)
+    !> j2: per cent of the elements yielded and of the chunks never yielded
+    real(wp), intent(out) :: yshare(2)
     real(wp), allocatable :: u(:,:), f(:,:)
     real(wp) :: t0, t
     integer :: calls, r, k
@@ -344,6 +358,8 @@ contains
         ns(r, k) = 1.0e9_wp*t/(real(calls, wp)*real(blk%nel, wp))
       end do thread_counts
     end do repetitions
+    yshare = 0.0_wp
+    if (blk%material == MAT_J2) yshare = yield_share(plastic, blk%nel)
     ! keep the result alive so the calls cannot be optimised away
     if (.not. (abs(sum(f)) < huge(1.0_wp))) write(output_unit, '(a)') '# non-finite internal force'
   end subroutine bench_internal_force
@@ -357,12 +373,14 @@ contains
   !> update_energy + advance_state; steps(k) the steps timed on nthr(k).
   !> balance: the relative energy balance at the end (round-off for this
   !> undamped linear model, so a wrong kernel shows up here).
-  subroutine bench_step(model, nthr, min_time, nrep, steps, ns, split, balance)
+  subroutine bench_step(model, nthr, min_time, nrep, steps, ns, split, balance, yshare)
     type(model_t), intent(inout) :: model
     integer, intent(in) :: nthr(:), nrep
     real(wp), intent(in) :: min_time
     integer(i8), intent(out) :: steps(:)
     real(wp), intent(out) :: ns(:,:), split(:,:,:), balance
+    !> j2: per cent of the elements yielded and of the chunks never yielded
+    real(wp), intent(out) :: yshare(2)
     type(state_t) :: state
     real(wp) :: t0, t1, t2, t3, tf, tp, tr, scale
     integer :: r, n, k
@@ -401,7 +419,28 @@ contains
       end do thread_counts
     end do repetitions
     balance = state%energy%balance/max(state%energy%scale, tiny(1.0_wp))
+    yshare = 0.0_wp
+    if (allocated(state%plastic(1, 1)%h)) yshare = yield_share(state%plastic(1, 1), model%nelem)
   end subroutine bench_step
+
+  !> Per cent of the nel elements with ebar > 0 at a Gauss point, and of the
+  !> chunks still virgin (their internal variables all 0: the small-strain
+  !> kernel skips their return while they stay elastic).
+  function yield_share(plastic, nel) result(share)
+    type(block_plastic_t), intent(in) :: plastic
+    integer, intent(in) :: nel
+    real(wp) :: share(2)
+    integer :: ic, il, ny
+    ! (loops: no temporary to add to the phase's peak memory)
+    ny = 0
+    do ic = 1, size(plastic%h, 4)
+      do il = 1, size(plastic%h, 1)
+        if (any(plastic%h(il, h_ebar, :, ic) > 0.0_wp)) ny = ny + 1
+      end do
+    end do
+    share(1) = 100.0_wp*real(ny, wp)/real(nel, wp)
+    share(2) = 100.0_wp*real(count(plastic%virgin), wp)/real(size(plastic%virgin), wp)
+  end function yield_share
 
   !> The machine's ceiling for the step's speed-up: T serial runs of the
   !> same model at once (one per thread, each on its own copy of the model),

@@ -26,6 +26,7 @@ module raccord_checkpoint
   use raccord_deck, only: write_scene
   use raccord_paths, only: absolute_path, path_dir
   use raccord_state, only: state_t
+  use raccord_elastic_block, only: settle_plastic
   use raccord_contact_pair, only: contact_pair_t
   use raccord_output, only: output_mark_t
   use raccord_files, only: rename_file, delete_file, file_exists, write_failure_reason, crc_of_file
@@ -282,6 +283,8 @@ contains
               h = reshape(flat, shape(h))
               deallocate(flat)
             end associate
+            ! the chunks still virgin, from the internal variables read
+            call settle_plastic(state%plastic(kb, ib))
           end do
         end do
       end if

@@ -70,7 +70,7 @@ module raccord_elastic_block
   public :: init_elastic_block, add_internal_force, claim_first_touch, element_stiffness
   public :: add_lumped_mass, add_body_force, max_eigenvalue_bound, add_nodal_stress
   public :: make_finite, init_watch, watch_energy, watch_w2, watch_inverted, finite_w2_at_rest
-  public :: make_plastic, init_plastic, watch_dissipation, reports_energy
+  public :: make_plastic, init_plastic, settle_plastic, watch_dissipation, reports_energy
   public :: add_nodal_plastic
   public :: element_eigenvalue_bounds, scale_element_density, finite_w2_elements
   public :: make_axisymmetric
@@ -197,6 +197,12 @@ module raccord_elastic_block
   !> state).
   type, public :: block_plastic_t
     real(wp), allocatable :: h(:,:,:,:)   !< (chunk_len, nhist, ngp, nchunk)
+    !> (nchunk) small strain, plane: the chunk's internal variables are all
+    !> still 0 (never yielded), so the kernel may skip their traffic
+    !> (raccord_plastic_kernel); set by init_plastic and the kernel, and
+    !> recomputed from h by settle_plastic after h is read back
+    logical, allocatable :: virgin(:)
+    logical :: track = .false.            !< the block's kernel uses virgin
   end type block_plastic_t
 
   !> Element-level work: raccord_elastic_block_element.f90 (a submodule).
@@ -388,6 +394,11 @@ module raccord_elastic_block
       type(elastic_block_t), intent(in) :: blk
       type(block_plastic_t), intent(out) :: plastic
     end subroutine init_plastic
+    !> plastic%virgin from plastic%h, after h was set from outside (a
+    !> checkpoint): a chunk is virgin when all its internal variables are 0.
+    module subroutine settle_plastic(plastic)
+      type(block_plastic_t), intent(inout) :: plastic
+    end subroutine settle_plastic
     !> Plastic work of the last forces' step, summed in chunk order.
     pure module real(wp) function watch_dissipation(watch) result(w)
       type(block_watch_t), intent(in) :: watch
@@ -407,11 +418,12 @@ module raccord_elastic_block
     !> plastic work dis (and for finite strain jm, jel, w2 as the finite
     !> kernel; small strain: jm = 1, jel = 0, w2 = 0) of chunk ic, whose nc
     !> elements' internal variables hist are updated in place.
-    pure module subroutine j2_chunk(blk, ic, nc, mon, hist, ue, fe, sg, act, en, dis, jm, jel, w2)
+    pure module subroutine j2_chunk(blk, ic, nc, mon, hist, virgin, ue, fe, sg, act, en, dis, jm, jel, w2)
       type(elastic_block_t), intent(in) :: blk
       integer, intent(in) :: ic, nc
       logical, intent(in) :: mon
       real(wp), intent(inout) :: hist(chunk_len, nhist, *)
+      logical, intent(inout) :: virgin
       real(wp), intent(in) :: ue(chunk_len, 2, max_nen)
       real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
       real(wp), intent(out) :: sg(chunk_len, 4, *), act(chunk_len), en, dis, jm, w2
@@ -815,7 +827,7 @@ contains
             call kernel_finite_q8(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)
           case (KERN_J2_SMALL_Q4:KERN_J2_FINITE_AXI_Q8)
-            call j2_chunk(blk, ic, nc, mon, plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis, jm, jel, w2)
+            call j2_chunk(blk, ic, nc, mon, plastic%h(:, :, :, ic), plastic%virgin(ic), ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_AXI_Q4)
             call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           case (KERN_AXI_Q8)

@@ -82,7 +82,18 @@ contains
     do v = 1, nhist
       plastic%h(:, v, :, :) = h0(v)
     end do
+    allocate(plastic%virgin(blk%nchunk))
+    ! only the small-strain plane kernels use the flag (elsewhere .false.)
+    plastic%track = blk%kernel == KERN_J2_SMALL_Q4 .or. blk%kernel == KERN_J2_SMALL_Q8
+    call settle_plastic(plastic)
   end procedure init_plastic
+
+  module procedure settle_plastic
+    integer :: ic
+    do ic = 1, size(plastic%virgin)
+      plastic%virgin(ic) = plastic%track .and. all(plastic%h(:, :, :, ic) == 0.0_wp)
+    end do
+  end procedure settle_plastic
 
   module procedure watch_dissipation
     integer :: k
@@ -122,19 +133,19 @@ contains
     select case (blk%kernel)
     case (KERN_J2_SMALL_Q4)
       call kernel_j2_small_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, virgin, ue, fe, sg, act, en, dis, &
         jm, jel, w2)
     case (KERN_J2_SMALL_Q8)
       call kernel_j2_small_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, virgin, ue, fe, sg, act, en, dis, &
         jm, jel, w2)
     case (KERN_J2_FINITE_Q4)
       call kernel_j2_finite_q4(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, virgin, ue, fe, sg, act, en, dis, &
         jm, jel, w2)
     case (KERN_J2_FINITE_Q8)
       call kernel_j2_finite_q8(nc, blk%moduli, blk%j2, mean, blk%dnref, blk%pg(:, :, :, ic), blk%cw(:, :, ic), &
-        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, ue, fe, sg, act, en, dis, &
+        blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, hist, virgin, ue, fe, sg, act, en, dis, &
         jm, jel, w2)
     case (KERN_J2_AXI_Q4)
       call kernel_j2_axi_q4(nc, blk%moduli, blk%j2, mean, blk%nref, blk%dnref, blk%h(:, :, :, ic), &
@@ -154,6 +165,7 @@ contains
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), sgp(chunk_len, 4, max_gp)
     real(wp) :: hist(chunk_len, nhist, max_gp), act(chunk_len), en, dis, jm, w2
     integer :: ic, e0, nc, i, a, node, jel, ngp
+    logical :: virgin
     ngp = blk%ngp
     do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
       e0 = (ic - 1)*chunk_len
@@ -165,7 +177,8 @@ contains
         end do
       end do
       hist(:, :, 1:ngp) = plastic%h(:, :, :, ic)
-      call j2_chunk(blk, ic, nc, .false., hist, ue, fe, sgp, act, en, dis, jm, jel, w2)
+      virgin = plastic%virgin(ic)
+      call j2_chunk(blk, ic, nc, .false., hist, virgin, ue, fe, sgp, act, en, dis, jm, jel, w2)
       ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)
       call extrapolate(reshape(sgp(:, :, 1:ngp), [chunk_len, 4, ngp]))
     end do

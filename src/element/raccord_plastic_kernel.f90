@@ -30,7 +30,7 @@
 module raccord_plastic_kernel
   use raccord_kinds, only: wp
   use raccord_material, only: moduli_t
-  use raccord_plasticity, only: j2_t, nhist, j2_small_lanes, j2_hencky_lanes
+  use raccord_plasticity, only: j2_t, nhist, j2_small_lanes, j2_hencky_lanes, j2_small_trial_lanes
   use raccord_finite_kernel, only: fin_chunk_len, q4h_row, q4h_col
   implicit none
   private
@@ -47,9 +47,14 @@ contains
   !> updated by this state's return; act = 1 for the elements whose return
   !> was plastic at a Gauss point, else 0; energy = sum c W_e, dissip = sum c
   !> dW_p; jmin/jmin_el/w2 as the finite kernel (jmin = 1 in small strain).
+  !> virgin (small strain; finite strain leaves it .false.): on entry, the
+  !> chunk's internal variables are all still 0 (never yielded); then, if no
+  !> point's elastic trial reaches the yield surface, the return is skipped
+  !> and hist is neither read nor written (the same bits: a return with
+  !> dgamma = 0 is the identity). On exit, whether they are still all 0.
   !> The other arguments are those of kernel_finite_q4.
   pure subroutine kernel_j2_small_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
+      hist, virgin, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 4, ngp = 4
     real(wp), parameter :: lfac = 1.0_wp
     logical, parameter :: split = .true., finite = .false.
@@ -57,7 +62,7 @@ contains
   end subroutine kernel_j2_small_q4
 
   pure subroutine kernel_j2_small_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
+      hist, virgin, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 8, ngp = 9
     real(wp), parameter :: lfac = 0.3_wp
     logical, parameter :: split = .false., finite = .false.
@@ -65,7 +70,7 @@ contains
   end subroutine kernel_j2_small_q8
 
   pure subroutine kernel_j2_finite_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
+      hist, virgin, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 4, ngp = 4
     real(wp), parameter :: lfac = 1.0_wp
     logical, parameter :: split = .true., finite = .true.
@@ -73,7 +78,7 @@ contains
   end subroutine kernel_j2_finite_q4
 
   pure subroutine kernel_j2_finite_q8(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, thickness, monitor, &
-      hist, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
+      hist, virgin, ue, fe, sg, act, energy, dissip, jmin, jmin_el, w2)
     integer, parameter :: nen = 8, ngp = 9
     real(wp), parameter :: lfac = 0.3_wp
     logical, parameter :: split = .false., finite = .true.

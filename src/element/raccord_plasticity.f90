@@ -52,8 +52,9 @@ module raccord_plasticity
   integer, parameter, public :: nhist = 4
   integer, parameter, public :: h_xx = 1, h_yy = 2, h_xy = 3, h_ebar = 4
   real(wp), parameter :: r23 = 0.816496580927726_wp   ! sqrt(2/3)
+  real(wp), parameter :: third = 1.0_wp/3.0_wp
 
-  public :: j2_initial_history, j2_return_small, j2_return_hencky, j2_small_lanes, j2_hencky_lanes
+  public :: j2_initial_history, j2_return_small, j2_return_hencky, j2_small_lanes, j2_hencky_lanes, j2_small_trial_lanes
 
 contains
 
@@ -141,10 +142,14 @@ contains
     real(wp), intent(in) :: eps(ld, 4), tb(ld)
     real(wp), intent(inout) :: h(ld, nhist)
     real(wp), intent(out) :: sig(ld, 4), we(ld), dwp(ld)
-    real(wp) :: e1, e2, e3, e4, tr3, s1, s2, s3, s4, nrm, f, dg, sc, eb, eb0, th, g2, rh
+    real(wp) :: e1, e2, e3, e4, tr3, s1, s2, s3, s4, nrm, f, dg, sc, eb, eb0, th, g2, rh, r4g, hk
     integer :: i
     g2 = 2.0_wp*m%g
     rh = 1.0_wp/(g2 + 2.0_wp*j2%hardening/3.0_wp)
+    ! constants of every lane: 1/(4G) of W_e, K/2; no division in the loop
+    ! but the return's own 1/|s_tr|
+    r4g = 1.0_wp/(2.0_wp*g2)
+    hk = 0.5_wp*m%k
     do i = 1, n
       e1 = eps(i, 1) - h(i, 1)
       e2 = eps(i, 2) - h(i, 2)
@@ -153,7 +158,7 @@ contains
       eb0 = h(i, h_ebar)
       th = tb(i)
       ! deviator of the elastic trial strain (eps_p is traceless)
-      tr3 = (e1 + e2 + e4)/3.0_wp
+      tr3 = (e1 + e2 + e4)*third
       s1 = g2*(e1 - tr3)
       s2 = g2*(e2 - tr3)
       s4 = g2*(e4 - tr3)
@@ -176,10 +181,56 @@ contains
       sig(i, 2) = s2 + m%k*th
       sig(i, 3) = s3
       sig(i, 4) = s4 + m%k*th
-      we(i) = 0.5_wp*m%k*th*th + (s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)/(2.0_wp*g2)
+      we(i) = hk*th*th + (s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)*r4g
       dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(eb0 + eb))*(eb - eb0)
     end do
   end subroutine j2_small_lanes
+
+  !> The elastic trial (P-1) on n lanes of virgin points (eps_p = 0, ebar =
+  !> 0): sig and we as j2_small_lanes gives them, written with the same
+  !> expressions in the same order, and below = every lane's |s_tr|^2 below
+  !> (sqrt(2/3) sigma_y0)^2 (1 - 1e-12), a margin far above the round-off of
+  !> the square root, so that f_tr < 0 there too. Then the return is the
+  !> identity (dgamma = 0 exactly: the internal variables stay 0 and s is
+  !> scaled by 1), so sig and we are the return's bits, and the caller may
+  !> leave the internal variables unread and unwritten. No division and no
+  !> square root.
+  pure subroutine j2_small_trial_lanes(n, m, j2, eps, tb, sig, we, below)
+    integer, intent(in) :: n
+    integer, parameter :: ld = fin_chunk_len
+    type(moduli_t), intent(in) :: m
+    type(j2_t), intent(in) :: j2
+    real(wp), intent(in) :: eps(ld, 4), tb(ld)
+    real(wp), intent(out) :: sig(ld, 4), we(ld)
+    logical, intent(out) :: below
+    real(wp) :: e1, e2, e3, e4, tr3, s1, s2, s3, s4, nrm2, nmax, th, g2, r4g, hk, lim
+    integer :: i
+    g2 = 2.0_wp*m%g
+    r4g = 1.0_wp/(2.0_wp*g2)
+    hk = 0.5_wp*m%k
+    lim = (r23*j2%yield0)**2*(1.0_wp - 1.0e-12_wp)
+    nmax = 0.0_wp
+    do i = 1, n
+      e1 = eps(i, 1)
+      e2 = eps(i, 2)
+      e3 = eps(i, 3)
+      e4 = eps(i, 4)
+      th = tb(i)
+      tr3 = (e1 + e2 + e4)*third
+      s1 = g2*(e1 - tr3)
+      s2 = g2*(e2 - tr3)
+      s4 = g2*(e4 - tr3)
+      s3 = g2*e3
+      nrm2 = s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3
+      nmax = max(nmax, nrm2)
+      sig(i, 1) = s1 + m%k*th
+      sig(i, 2) = s2 + m%k*th
+      sig(i, 3) = s3
+      sig(i, 4) = s4 + m%k*th
+      we(i) = hk*th*th + (s1*s1 + s2*s2 + s4*s4 + 2.0_wp*s3*s3)*r4g
+    end do
+    below = nmax <= lim
+  end subroutine j2_small_trial_lanes
 
   !> (P-4), (P-1)..(P-3), (P-5) on n lanes. f(:, 4) in-plane F; with mean,
   !> jb is the element's volume ratio (mean dilatation) and we leaves out

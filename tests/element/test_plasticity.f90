@@ -6,10 +6,12 @@
 !> a coaxial path, its objectivity and its small-strain limit
 !> (method brief method-finite-plastic-axi.md 7.1, 7.3, 8).
 program test_plasticity
-  use raccord_kinds, only: wp
+  use raccord_kinds, only: wp, i8
   use raccord_material, only: moduli_t, make_moduli
   use raccord_plasticity, only: j2_t, nhist, h_ebar, j2_initial_history, j2_return_small, j2_return_hencky
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
+  use raccord_finite_kernel, only: fin_chunk_len
+  use raccord_plastic_kernel, only: kernel_j2_small_q4
   implicit none
 
   real(wp), parameter :: young = 210000.0_wp, nu = 0.3_wp, sy0 = 240.0_wp, hmod = 2000.0_wp
@@ -22,7 +24,8 @@ program test_plasticity
     new_test('energy: elastic + plastic work equals the work of the stresses', test_energy), &
     new_test('Hencky return on a coaxial path equals the small-strain closed form in ln l', test_hencky_coaxial), &
     new_test('Hencky return is objective', test_hencky_rotation), &
-    new_test('Hencky return tends to the small-strain return', test_hencky_small_limit)])
+    new_test('Hencky return tends to the small-strain return', test_hencky_small_limit), &
+    new_test('the elastic trial of a virgin chunk equals the return bit for bit', test_virgin_chunk)])
 
 contains
 
@@ -367,4 +370,77 @@ contains
     write(buf, '(es12.5)') x
     s = trim(adjustl(buf))
   end function fmt
+  !> The small-strain Q4 kernel on a virgin chunk (internal variables 0)
+  !> with virgin = .true. (elastic trial alone when no point yields, the
+  !> internal variables untouched) and .false. (the return at every point):
+  !> forces, stresses, energies, plastic work and internal variables equal
+  !> bit for bit, with B-bar and without, on chunks that stay elastic and
+  !> chunks that yield; the flag on exit says whether the chunk is still 0.
+  subroutine test_virgin_chunk(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    integer, parameter :: ld = fin_chunk_len
+    type(moduli_t) :: m
+    type(j2_t) :: j2
+    real(wp) :: dn(2, 4, 4), pg(ld, 4, 4), cw(ld, 4), vol0(ld), diag(ld, 4), rinv(ld)
+    real(wp) :: ue(ld, 2, 8), fe(ld, 2, 8, 2), sg(ld, 4, 4, 2), act(ld, 2), hist(ld, nhist, 4, 2)
+    real(wp) :: en(2), dis(2), jm, w2, amp, cw4(ld, 4, 1)
+    integer :: trial, k, jel, nc, nel_yield, nel_trial
+    integer(i8) :: seed
+    logical :: virgin(2), mean
+    m = make_moduli(young, nu)
+    j2 = j2_t(sy0, hmod)
+    dn = 0.0_wp
+    diag = 1.0_wp
+    rinv = 1.0_wp
+    seed = 12345_i8
+    nel_yield = 0
+    nel_trial = 0
+    do trial = 1, 40
+      nc = ld - mod(trial, 5)
+      mean = mod(trial, 2) == 0
+      ! strains of about amp: around the yield strain sy0/(2G) ~ 1.5e-3
+      amp = 4.0e-4_wp*real(1 + mod(trial, 8), wp)
+      call fill(pg, 0.0_wp, 1.0_wp, seed)
+      call fill(cw4, 0.5_wp, 1.0_wp, seed)
+      cw = cw4(:, :, 1)
+      vol0 = sum(cw, 2)
+      ue = 0.0_wp
+      call fill(ue(:, :, 1:4), -0.5_wp*amp, amp, seed)
+      do k = 1, 2
+        hist(:, :, :, k) = 0.0_wp
+        virgin(k) = k == 1
+        call kernel_j2_small_q4(nc, m, j2, mean, dn, pg, cw, vol0, diag, rinv, 1.0_wp, .false., &
+          hist(:, :, :, k), virgin(k), ue, fe(:, :, :, k), sg(:, :, :, k), act(:, k), en(k), dis(k), jm, jel, w2)
+      end do
+      if (virgin(1)) then
+        nel_trial = nel_trial + 1
+      else
+        nel_yield = nel_yield + 1
+      end if
+      call check(failure, all(fe(1:nc, :, 1:4, 1) == fe(1:nc, :, 1:4, 2)), 'virgin chunk: forces bit for bit')
+      call check(failure, all(sg(1:nc, :, :, 1) == sg(1:nc, :, :, 2)), 'virgin chunk: stresses bit for bit')
+      call check(failure, all(act(1:nc, 1) == act(1:nc, 2)), 'virgin chunk: yielded flags')
+      call check(failure, en(1) == en(2) .and. dis(1) == dis(2), 'virgin chunk: energy and plastic work bit for bit')
+      call check(failure, all(hist(1:nc, :, :, 1) == hist(1:nc, :, :, 2)), 'virgin chunk: internal variables')
+      call check(failure, virgin(1) .eqv. all(hist(1:nc, :, :, 2) == 0.0_wp), &
+        'virgin on exit = internal variables still 0')
+    end do
+    call check(failure, nel_trial > 0 .and. nel_yield > 0, 'both elastic and yielding chunks were tried')
+  end subroutine test_virgin_chunk
+
+  !> a = lo + width x reproducible numbers in [0, 1) (linear congruential)
+  subroutine fill(a, lo, width, seed)
+    real(wp), intent(out) :: a(:,:,:)
+    real(wp), intent(in) :: lo, width
+    integer(i8), intent(inout) :: seed
+    integer :: i, j, k
+    do k = 1, size(a, 3)
+      do j = 1, size(a, 2)
+        do i = 1, size(a, 1)
+          seed = mod(1103515245_i8*seed + 12345_i8, 2147483648_i8)
+          a(i, j, k) = lo + width*real(seed, wp)/2147483648.0_wp
+        end do
+      end do
+    end do
+  end subroutine fill
 end program test_plasticity
