@@ -745,7 +745,7 @@ contains
           case (KERN_J2_SMALL_Q4:KERN_J2_AXI_Q8)
             call j2_chunk(blk, ic, nc, mon, plastic%h(:, :, :, ic), ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_AXI_Q4)
-            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
+            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
           case (KERN_AXI_Q8)
             call kernel_axi_q8(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           end select
