@@ -3,7 +3,7 @@
 !> of Q4 or Q8 elements in the (r, z) = (x, y) half-plane, Hooke's law,
 !> full Gauss integration weighted by 2 pi r.
 !>
-!> Per Gauss point g of each element the block keeps (raccord_elastic_block_axi)
+!> Q8: per Gauss point g of each element the block keeps (raccord_elastic_block_axi)
 !>   H = sqrt(c) J^-1 (2x2, as the plane Q8 kernel)  and  s = sqrt(c)/r_g,
 !> c = w_g detJ 2 pi r_g, so that with the reference shape functions N_a
 !> and their natural derivatives D_a (the same for every element)
@@ -14,6 +14,7 @@
 !> strain matrix (rows rr, zz, tt, rz). The four strain components at a
 !> Gauss point are explicit (g11, g22, gtt, g12 + g21): a plasticity
 !> return replaces the Hooke lines without touching the rest.
+!> Q4 keeps 11 reals per element instead (axi_q4_data, kernel_axi_q4).
 !> Gauss points are interior, r_g > 0 for r >= 0 nodes: no division by 0.
 module raccord_axi_kernel
   use raccord_kinds, only: wp, pi
