@@ -19,10 +19,11 @@
 module raccord_axi_kernel
   use raccord_kinds, only: wp, pi
   use raccord_finite_kernel, only: fin_chunk_len
+  use, intrinsic :: iso_c_binding, only: c_loc, c_intptr_t
   implicit none
   private
 
-  public :: kernel_axi_q4, kernel_axi_q8, axi_q4_data
+  public :: kernel_axi_q4, kernel_axi_q8, axi_q4_data, axi_q4_shift, put_axi_q4
 
   integer, parameter :: chunk_len = fin_chunk_len, max_nen = 8
   !> Slots of the Q4 kernel data (axi_q4_data): the map's a, b, c of r and
@@ -63,6 +64,30 @@ contains
       hq(axq4_w1 + g - 1) = 1.0_wp/(dj*rg)
     end do
   end function axi_q4_data
+
+  !> How many reals into a (the block's q4 array) the Q4 kernel data start so
+  !> that every chunk begins on a 64-byte boundary (0 to 7): the kernel
+  !> loads 8 lanes at a time, and loads split across two cache lines cost
+  !> it up to 1.8x (performance.md, "Axisymmetric kernels"). The chunk
+  !> stride, chunk_len naxq4 reals, is a multiple of 64 bytes.
+  integer function axi_q4_shift(a) result(shift)
+    real(wp), intent(in), target :: a(*)
+    integer(c_intptr_t) :: addr
+    integer :: rem
+    addr = transfer(c_loc(a(1)), addr)
+    rem = int(modulo(addr, 64_c_intptr_t))
+    shift = 0
+    if (mod(rem, storage_size(a(1))/8) == 0) shift = mod(64 - rem, 64)/(storage_size(a(1))/8)
+  end function axi_q4_shift
+
+  !> Element il of a chunk's Q4 kernel data (the chunk passed by its first
+  !> real, as the kernel receives it).
+  pure subroutine put_axi_q4(hq, il, d)
+    real(wp), intent(inout) :: hq(chunk_len, naxq4)
+    integer, intent(in) :: il
+    real(wp), intent(in) :: d(naxq4)
+    hq(il, :) = d
+  end subroutine put_axi_q4
 
   !> r_g and detJ_g of a Q4 from its map coefficients, as the kernel forms them.
   pure subroutine q4_point(hq, xi, eta, rg, dj)
