@@ -153,6 +153,10 @@ contains
       pz1 = 0.0_wp
       pz2 = 0.0_wp
       pz3 = 0.0_wp
+      ! unrolled, the points' xi and eta are constants and the element loop
+      ! vectorises whole (without it gfortran keeps a point loop inside the
+      ! vectorised element loop, measured 1.2-2x slower at 1e5 elements);
+      ! other compilers ignore the directive
       !GCC$ unroll 4
       gauss: do g = 1, ngp
         xi = xg(g)
