@@ -186,7 +186,8 @@ contains
     s = trim(line(1:k))
   end function load_average
 
-  !> Wall-clock seconds from an arbitrary origin.
+  !> Wall-clock seconds from an arbitrary origin (the process CPU time with
+  !> --clock cpu, use_cpu_clock).
   real(wp) function wall_time()
     integer(i8) :: count, rate
     real(wp) :: t
