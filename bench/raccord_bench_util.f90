@@ -12,12 +12,12 @@ module raccord_bench_util
   private
 
   public :: structured_mesh, plate_model, wall_time, peak_memory_kib, reset_peak_memory, median, &
-    load_average
+    load_average, use_cpu_clock
 
-  !> wall_time gives the process's processor time instead (raccord_bench
-  !> --cpu-time): on a machine shared with other work, a one-thread timing
-  !> then leaves out the time the process waited for a core
-  logical, public :: use_cpu_time = .false.
+  !> --clock cpu: wall_time returns the process's CPU time instead (one
+  !> thread only): on a loaded machine the time the process waits for a
+  !> core is left out of the figures
+  logical :: use_cpu_clock = .false.
 
 contains
 
@@ -186,12 +186,14 @@ contains
     s = trim(line(1:k))
   end function load_average
 
-  !> Wall-clock seconds from an arbitrary origin (with use_cpu_time, the
-  !> processor seconds of the process, all its threads).
+  !> Wall-clock seconds from an arbitrary origin (the process CPU time with
+  !> --clock cpu, use_cpu_clock).
   real(wp) function wall_time()
     integer(i8) :: count, rate
-    if (use_cpu_time) then
-      call cpu_time(wall_time)
+    real(wp) :: t
+    if (use_cpu_clock) then
+      call cpu_time(t)
+      wall_time = t
       return
     end if
     call system_clock(count, rate)

@@ -149,6 +149,7 @@ module raccord_elastic_block
     real(wp), allocatable, private :: gxi(:,:)       !< (2, ngp) natural coordinates of the Gauss points
     ! Q4 only
     real(wp), allocatable, private :: q4(:,:,:)      !< (chunk_len, nq4, nchunk) hot kernel data (eqs. 6.2-6.5)
+    integer, private :: q4_shift = 0                 !< axisymmetric Q4: its chunks start at q4(1 + q4_shift, 1, ic)
     real(wp), allocatable, private :: geo(:,:)       !< (ngeo, nel) map coefficients (eq. 6.2), cold
     ! Q8 only
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
@@ -829,7 +830,7 @@ contains
           case (KERN_J2_SMALL_Q4:KERN_J2_FINITE_AXI_Q8)
             call j2_chunk(blk, ic, nc, mon, plastic%h(:, :, :, ic), plastic%virgin(ic), ue, fe, sgp, act, en, dis, jm, jel, w2)
           case (KERN_AXI_Q4)
-            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
+            call kernel_axi_q4(nc, blk%lam, blk%mu, blk%q4(1 + blk%q4_shift, 1, ic), ue, fe)
           case (KERN_AXI_Q8)
             call kernel_axi_q8(nc, blk%lam, blk%mu, blk%nref, blk%dnref, blk%h(:, :, :, ic), blk%hoop(:, :, ic), ue, fe)
           case (KERN_FINITE_AXI_Q4, KERN_FINITE_AXI_Q8)

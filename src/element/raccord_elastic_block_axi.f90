@@ -7,6 +7,7 @@
 !> gamma_rz), eps_tt = u_r/r; int (.) dV = sum_g (.) 2 pi r_g w_g detJ_g.
 submodule (raccord_elastic_block) raccord_elastic_block_axi
   use raccord_kinds, only: pi
+  use raccord_axi_kernel, only: axi_q4_data, naxq4, axi_q4_shift, put_axi_q4
   implicit none
 
 contains
@@ -25,8 +26,17 @@ contains
       return
     end if
     if (blk%etype == ELEM_Q4) then
+      ! q4 holds the Q4 kernel's compact data (axi_q4_data); h, c and hoop
+      ! serve the stiffness, the masses, the stress output and the j2 kernel
+      ! (one chunk more: the kernel's chunks start q4_shift reals in, on a
+      ! 64-byte boundary, performance.md "Axisymmetric kernels")
       if (allocated(blk%q4)) deallocate(blk%q4)
-      allocate(blk%h(chunk_len, 4, blk%ngp, blk%nchunk), blk%c(blk%ngp, blk%nel), stat=stat, errmsg=msg)
+      allocate(blk%q4(chunk_len, naxq4, blk%nchunk + 1), blk%h(chunk_len, 4, blk%ngp, blk%nchunk), &
+        blk%c(blk%ngp, blk%nel), stat=stat, errmsg=msg)
+      if (stat == 0) then
+        blk%q4 = 0.0_wp
+        blk%q4_shift = axi_q4_shift(blk%q4)
+      end if
     else
       stat = 0
     end if
@@ -77,6 +87,7 @@ contains
         blk%h(il, 4, g, ic) = sq*jac(1, 1)
         blk%hoop(il, g, ic) = sqrt(cg)/rg
       end do
+      if (blk%etype == ELEM_Q4) call put_axi_q4(blk%q4(1 + blk%q4_shift, 1, ic), il, axi_q4_data(xe(:, 1:4)))
     end do
     blk%kernel = merge(KERN_AXI_Q4, KERN_AXI_Q8, blk%etype == ELEM_Q4)
     if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
