@@ -89,6 +89,8 @@ module raccord_mortar
     integer, allocatable :: mbeg(:), mend(:)  !< (nseg) each slave segment's master entries (empty: mbeg > mend)
     integer, allocatable :: stamp(:)          !< (nnode) last step a node's normal was taken at
     integer :: nstep = 0
+    integer, allocatable :: sstamp(:)         !< (nseg) last step snrm was taken at (2-node segments)
+    real(wp), allocatable :: snrm(:,:)        !< (2, nseg) outward unit normal of each straight segment
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
@@ -136,7 +138,8 @@ contains
     allocate(w%g1loc(3, 3, ns), source=0.0_wp)
     allocate(w%covered(nn), source=.false.)
     allocate(w%mbeg(ns), source=1)
-    allocate(w%mend(ns), w%stamp(nn), source=0)
+    allocate(w%mend(ns), w%stamp(nn), w%sstamp(ns), source=0)
+    allocate(w%snrm(2, ns), source=0.0_wp)
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%cand(max(16, master%nseg)))
     ! Corner c of the master chain is master%corner(c); segment l runs from
@@ -474,6 +477,10 @@ contains
     s0 = min(xi1, xi2)
     s1 = max(xi1, xi2)
     if (s1 - s0 <= XI_SLIVER) return
+    if (nen == 2 .and. nenm == 2) then
+      call integrate_overlap_line(slave%axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, w)
+      return
+    end if
     call load_segment(master, x, l, xm)
     ! Only a master that faces the slave, within reach, counts (tested at
     ! the middle of the overlap: no coupling to far or back-facing parts).
@@ -545,6 +552,118 @@ contains
       end do
     end do
   end subroutine integrate_overlap
+
+  !> integrate_overlap for straight 2-node slave and master segments (Q4
+  !> edges, the common case) on the overlap [s0, s1]: the same integrals
+  !> with the linear shape functions, the ray intersection and the
+  !> multiplier basis written out, so that no procedure of another module is
+  !> called per Gauss point (gfortran does not inline across modules; the
+  !> calls were most of the matching's time, doc/performance.md).
+  subroutine integrate_overlap_line(axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, w)
+    logical, intent(in) :: axisymmetric
+    type(contact_surface_t), intent(in) :: master
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: k, l
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3)
+    real(wp), intent(in) :: s0, s1, reach
+    type(mortar_work_t), intent(inout) :: w
+    integer :: a, b, g, ib, np
+    real(wp) :: xm1(2), xm2(2), ts(2), tm(2), xi, wgt, ps(2), n(2), eta, pm(2), dg, ns(2), nm(2), psi(2), &
+      mloc(2, 2), bounds(3), lo, hi, dgw
+    logical :: p0
+
+    xm1 = x(:, master%seg(1, l))
+    xm2 = x(:, master%seg(2, l))
+    ! Tangents of straight segments: x_s'(xi) = -x_1/2 + x_2/2 (shape_line).
+    ts = xs(:, 1)*(-0.5_wp) + xs(:, 2)*0.5_wp
+    tm = xm1*(-0.5_wp) + xm2*0.5_wp
+    ! Only a master that faces the slave, within reach, counts (tested at
+    ! the middle of the overlap, as integrate_overlap).
+    xi = 0.5_wp*(s0 + s1)
+    ns = [0.5_wp*(1.0_wp - xi), 0.5_wp*(1.0_wp + xi)]
+    ps = xs(:, 1)*ns(1) + xs(:, 2)*ns(2)
+    n = nn(:, 1)*ns(1) + nn(:, 2)*ns(2)
+    n = n/max(sqrt(n(1)**2 + n(2)**2), tiny(1.0_wp))
+    eta = ray_line(xm1, xm2, ps, n)
+    pm = xm1*(0.5_wp*(1.0_wp - eta)) + xm2*(0.5_wp*(1.0_wp + eta))
+    if (tm(2)*n(1) - tm(1)*n(2) >= 0.0_wp) return
+    if (abs((pm(1) - ps(1))*n(1) + (pm(2) - ps(2))*n(2)) > reach) return
+    ! Slave nodes whose own point faces this master segment.
+    do a = 1, 2
+      if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
+    end do
+    ! P0 on a 2-node edge: psi jumps at xi = 0 (multiplier_breaks).
+    p0 = w%multiplier == MULT_P0
+    bounds(1) = s0
+    np = 1
+    if (p0 .and. 0.0_wp > s0 .and. 0.0_wp < s1) then
+      np = 2
+      bounds(2) = 0.0_wp
+    end if
+    bounds(np + 1) = s1
+    ! dGamma = |dx_s/dxi| dxi, |dx_s/dxi| constant on a straight segment.
+    dg = sqrt(ts(1)**2 + ts(2)**2)
+    mloc = 0.0_wp
+    pieces: do ib = 1, np
+      lo = bounds(ib)
+      hi = bounds(ib + 1)
+      if (hi - lo <= XI_SLIVER) cycle
+      do g = 1, 3
+        xi = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*GS(g)
+        wgt = 0.5_wp*(hi - lo)*GW(g)
+        ns = [0.5_wp*(1.0_wp - xi), 0.5_wp*(1.0_wp + xi)]
+        ps = xs(:, 1)*ns(1) + xs(:, 2)*ns(2)
+        n = nn(:, 1)*ns(1) + nn(:, 2)*ns(2)
+        dgw = dg*wgt
+        ! axisymmetric: dGamma = 2 pi r |dx_s/dxi| dxi (method brief 9.4)
+        if (axisymmetric) dgw = dgw*(2.0_wp*pi*ps(1))
+        eta = ray_line(xm1, xm2, ps, n)
+        nm = [0.5_wp*(1.0_wp - eta), 0.5_wp*(1.0_wp + eta)]
+        ! psi of multiplier_basis: P1 hats (= the shape functions), P0
+        ! the dual cells [-1, 0), [0, 1].
+        if (p0) then
+          psi = merge([1.0_wp, 0.0_wp], [0.0_wp, 1.0_wp], xi < 0.0_wp)
+        else
+          psi = ns
+        end if
+        do b = 1, 2
+          if (psi(b) == 0.0_wp) cycle
+          ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
+          w%g1loc(1:2, b, k) = w%g1loc(1:2, b, k) + ns*psi(b)*dgw
+          mloc(:, b) = mloc(:, b) + nm*psi(b)*dgw
+        end do
+      end do
+    end do pieces
+    do b = 1, 2
+      do a = 1, 2
+        if (mloc(a, b) == 0.0_wp) cycle
+        if (w%nment == size(w%ment_node)) call grow_entries(w)
+        w%nment = w%nment + 1
+        w%ment_node(w%nment) = master%seg(a, l)
+        w%ment_loc(w%nment) = b
+        w%ment_w(w%nment) = mloc(a, b)
+      end do
+    end do
+  end subroutine integrate_overlap_line
+
+  !> Master parameter where the line q + alpha n meets the straight master
+  !> segment x1-x2: intersect_ray for nen = 2 (closed form of the linear
+  !> G(eta) = (x_m(eta) - q) x n, clipped to the end where |G| is smaller).
+  pure real(wp) function ray_line(x1, x2, q, n) result(eta)
+    real(wp), intent(in) :: x1(2), x2(2), q(2), n(2)
+    real(wp) :: glo, ghi
+    glo = (x1(1) - q(1))*n(2) - (x1(2) - q(2))*n(1)
+    ghi = (x2(1) - q(1))*n(2) - (x2(2) - q(2))*n(1)
+    if (glo == 0.0_wp) then
+      eta = -1.0_wp
+    else if (ghi == 0.0_wp) then
+      eta = 1.0_wp
+    else if (sign(1.0_wp, glo) == sign(1.0_wp, ghi)) then
+      eta = merge(-1.0_wp, 1.0_wp, abs(glo) < abs(ghi))
+    else
+      eta = -1.0_wp - 2.0_wp*glo/(ghi - glo)
+    end if
+  end function ray_line
 
   !> Boundary modification of the multiplier space (Wohlmuth, SIAM J.
   !> Numer. Anal. 38 (2000) 989-1012; Popp et al., IJNME 2010, section 3.3):
@@ -688,11 +807,17 @@ contains
         w%nrm(:, c) = 0.0_wp
         do t = 1, w%nadj(c)
           kk = w%adj_seg(t, c)
-          call load_segment(slave, x, kk, xs)
           if (slave%nen_seg == 2) then
-            ! A straight segment has one normal, the same at both ends.
-            w%nrm(:, c) = w%nrm(:, c) + outward_normal(2, xs, 0.0_wp)
+            ! A straight segment has one normal, the same at both ends:
+            ! taken once per step (the two nodes of the segment share it).
+            if (w%sstamp(kk) /= w%nstep) then
+              w%sstamp(kk) = w%nstep
+              call load_segment(slave, x, kk, xs)
+              w%snrm(:, kk) = line_normal(xs(:, 1), xs(:, 2))
+            end if
+            w%nrm(:, c) = w%nrm(:, c) + w%snrm(:, kk)
           else
+            call load_segment(slave, x, kk, xs)
             w%nrm(:, c) = w%nrm(:, c) + outward_normal(slave%nen_seg, xs, NODE_XI(w%adj_loc(t, c)))
           end if
         end do
@@ -708,6 +833,15 @@ contains
       end do
     end do
   end subroutine slave_normals
+
+  !> outward_normal of a straight segment x1-x2: its tangent x2/2 - x1/2
+  !> turned clockwise, unit.
+  pure function line_normal(x1, x2) result(n)
+    real(wp), intent(in) :: x1(2), x2(2)
+    real(wp) :: n(2), t(2)
+    t = x1*(-0.5_wp) + x2*0.5_wp
+    n = [t(2), -t(1)]/max(sqrt(t(1)**2 + t(2)**2), tiny(1.0_wp))
+  end function line_normal
 
   subroutine load_segment(surf, x, k, xs)
     type(contact_surface_t), intent(in) :: surf

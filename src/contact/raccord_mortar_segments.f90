@@ -192,7 +192,25 @@ contains
     pure subroutine eval(t, f, fp)
       real(wp), intent(in) :: t
       real(wp), intent(out) :: f, fp
-      real(wp) :: x(2), dx(2), m(2), dm(2)
+      real(wp) :: x(2), dx(2), m(2), dm(2), n1, n2
+      if (nen == 2) then
+        ! Straight segment: segment_point and normal_field written out
+        ! (shape_line's linear functions; no calls in the iteration).
+        n1 = 0.5_wp*(1.0_wp - t)
+        n2 = 0.5_wp*(1.0_wp + t)
+        x = xs(:, 1)*n1 + xs(:, 2)*n2
+        dx = xs(:, 1)*(-0.5_wp) + xs(:, 2)*0.5_wp
+        if (kind == 1) then
+          m = nn(:, 1)*n1 + nn(:, 2)*n2
+          dm = nn(:, 1)*(-0.5_wp) + nn(:, 2)*0.5_wp
+          f = cross2(q - x, m)
+          fp = cross2(-dx, m) + cross2(q - x, dm)
+        else
+          f = cross2(x - q, n)
+          fp = cross2(dx, n)
+        end if
+        return
+      end if
       call segment_point(nen, xs, t, x, dx)
       if (kind == 1) then
         call normal_field(nen, nn, t, m, dm)
