@@ -186,7 +186,7 @@ contains
   end subroutine update_sets
 
   !> Largest violation of (19) by the final iterate, relative: gaps to the
-  !> shortest constraint length, forces to the largest normal force.
+  !> shortest nonzero constraint length, forces to the largest normal force.
   real(wp) function condition_residual(cs, mu, friction, w) result(r)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: mu
@@ -196,7 +196,10 @@ contains
     real(wp) :: fscale, lscale
     m = cs%m
     fscale = max(maxval(abs(w%fn(1:m))), tiny(1.0_wp))
-    lscale = max(minval(cs%length(1:m)), tiny(1.0_wp))
+    ! the shortest length a multiplier acts on; a row of zero length (an
+    ! axisymmetric node on the axis: 2 pi r = 0) would make any gap huge
+    lscale = minval(cs%length(1:m), mask=cs%length(1:m) > 0.0_wp)
+    if (.not. (lscale > 0.0_wp .and. lscale < huge(1.0_wp))) lscale = 1.0_wp
     r = 0.0_wp
     do j = 1, m
       if (w%status(j) == ST_OPEN) then
