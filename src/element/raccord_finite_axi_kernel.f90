@@ -31,16 +31,15 @@
 module raccord_finite_axi_kernel
   use raccord_kinds, only: wp, pi
   use raccord_material, only: moduli_t, MAT_NEO_HOOKE, MAT_SVK, MAT_J2, VOL_MEAN
-  use raccord_plasticity, only: j2_t, nhist, h_ebar
+  use raccord_plasticity, only: j2_t, nhist, j2_hencky_ftt_lanes
   use raccord_finite_kernel, only: fin_chunk_len
   implicit none
   private
 
-  public :: kernel_finite_axi_q4, kernel_finite_axi_q8, j2_hencky_axi_lanes
+  public :: kernel_finite_axi_q4, kernel_finite_axi_q8
 
   integer, parameter :: max_nen = 8, max_gp = 9
   integer, parameter :: ld = fin_chunk_len
-  real(wp), parameter :: r23 = 0.816496580927726_wp   ! sqrt(2/3)
 
 contains
 
@@ -177,101 +176,4 @@ contains
       wmod(i) = max(wmod(i), (m%lam + 2.0_wp*m%g)*bmax*bmax + tmax)
     end do
   end subroutine svk_axi_chunk
-
-  !> J2, Hencky elasticity and the exponential-map return (P-4),
-  !> (P-1)..(P-3), (P-5) of raccord_plasticity on n lanes, axisymmetric:
-  !> f(:, 1:5) = (F_rr, F_zr, F_rz, F_zz, F_tt); the hoop direction is the
-  !> third principal direction, be_tr,tt = F_tt^2 Cp^-1_tt with Cp^-1_tt
-  !> = 1/det(Cp^-1 in-plane) (det Cp = 1, flow isochoric). h = in-plane
-  !> Cp^-1 (rr, zz, rz) and ebar; tau Kirchhoff (rr, zz, rz, tt); jb the
-  !> element's volume ratio with mean (the volumetric energy is then the
-  !> caller's); wmod the bound K + 4G/3 + max principal |tau|. The same
-  !> lines as j2_hencky_lanes with F_tt in place of 1.
-  pure subroutine j2_hencky_axi_lanes(n, m, j2, mean, f, jb, h, tau, we, dwp, wmod)
-    integer, intent(in) :: n
-    type(moduli_t), intent(in) :: m
-    type(j2_t), intent(in) :: j2
-    logical, intent(in) :: mean
-    real(wp), intent(in) :: f(ld, 5), jb(ld)
-    real(wp), intent(inout) :: h(ld, nhist)
-    real(wp), intent(out) :: tau(ld, 4), we(ld), dwp(ld), wmod(ld)
-    real(wp) :: f11, f21, f12, f22, f33, q11, q22, q12, g11, g12, g21, g22, b11, b22, b12, b33
-    real(wp) :: mid, rad, rr, cs, sn, e1, e2, e3, tr, d1, d2, d3, nrm, fy, dg, sc, eb, p, t1, t2, t3, j, j2d, rj
-    real(wp) :: a1, a2, x11, x22, x12, g2, rh, wvol, pvol, jbi, eb0
-    integer :: i
-    g2 = 2.0_wp*m%g
-    rh = 1.0_wp/(g2 + 2.0_wp*j2%hardening/3.0_wp)
-    wvol = merge(0.0_wp, 0.5_wp*m%k, mean)
-    pvol = merge(1.0_wp, 0.0_wp, mean)
-    do i = 1, n
-      f11 = f(i, 1)
-      f21 = f(i, 2)
-      f12 = f(i, 3)
-      f22 = f(i, 4)
-      f33 = f(i, 5)
-      q11 = h(i, 1)
-      q22 = h(i, 2)
-      q12 = h(i, 3)
-      eb0 = h(i, h_ebar)
-      ! (P-4): be_tr = F Cp^-1 F^T, in-plane block and tt
-      g11 = f11*q11 + f12*q12
-      g12 = f11*q12 + f12*q22
-      g21 = f21*q11 + f22*q12
-      g22 = f21*q12 + f22*q22
-      b11 = g11*f11 + g12*f12
-      b22 = g21*f21 + g22*f22
-      b12 = g11*f21 + g12*f22
-      b33 = f33*f33/(q11*q22 - q12*q12)
-      mid = 0.5_wp*(b11 + b22)
-      rad = sqrt((0.5_wp*(b11 - b22))**2 + b12*b12)
-      rr = max(2.0_wp*rad, tiny(1.0_wp))
-      cs = (b11 - b22)/rr
-      sn = 2.0_wp*b12/rr
-      e1 = 0.5_wp*log(mid + rad)
-      e2 = 0.5_wp*log(max(mid - rad, tiny(1.0_wp)))
-      e3 = 0.5_wp*log(b33)
-      tr = e1 + e2 + e3
-      d1 = e1 - tr/3.0_wp
-      d2 = e2 - tr/3.0_wp
-      d3 = e3 - tr/3.0_wp
-      ! (P-1)..(P-3) on the principal deviator
-      nrm = g2*sqrt(d1*d1 + d2*d2 + d3*d3)
-      fy = nrm - r23*(j2%yield0 + j2%hardening*eb0)
-      dg = max(fy, 0.0_wp)*rh
-      sc = 1.0_wp - g2*dg/max(nrm, tiny(1.0_wp))
-      d1 = sc*d1
-      d2 = sc*d2
-      d3 = sc*d3
-      eb = eb0 + r23*dg
-      j2d = f11*f22 - f21*f12
-      j = f33*j2d
-      jbi = pvol*jb(i) + (1.0_wp - pvol)
-      p = (1.0_wp - pvol)*m%k*tr + pvol*m%k*log(jbi)*j/jbi
-      t1 = g2*d1 + p
-      t2 = g2*d2 + p
-      t3 = g2*d3 + p
-      tau(i, 1) = 0.5_wp*(t1 + t2) + 0.5_wp*(t1 - t2)*cs
-      tau(i, 2) = 0.5_wp*(t1 + t2) - 0.5_wp*(t1 - t2)*cs
-      tau(i, 3) = 0.5_wp*(t1 - t2)*sn
-      tau(i, 4) = t3
-      we(i) = wvol*tr*tr + m%g*(d1*d1 + d2*d2 + d3*d3)
-      dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(eb0 + eb))*(eb - eb0)
-      wmod(i) = m%k + 2.0_wp*g2/3.0_wp + max(abs(t1), abs(t2), abs(t3))
-      ! (P-5): be in the same directions, in-plane Cp^-1 = F_2^-1 be_2 F_2^-T
-      a1 = exp(2.0_wp*(d1 + tr/3.0_wp))
-      a2 = exp(2.0_wp*(d2 + tr/3.0_wp))
-      x11 = 0.5_wp*(a1 + a2) + 0.5_wp*(a1 - a2)*cs
-      x22 = 0.5_wp*(a1 + a2) - 0.5_wp*(a1 - a2)*cs
-      x12 = 0.5_wp*(a1 - a2)*sn
-      rj = 1.0_wp/j2d
-      g11 = (f22*x11 - f12*x12)*rj
-      g12 = (f22*x12 - f12*x22)*rj
-      g21 = (f11*x12 - f21*x11)*rj
-      g22 = (f11*x22 - f21*x12)*rj
-      h(i, 1) = (g11*f22 - g12*f12)*rj
-      h(i, 2) = (g22*f11 - g21*f21)*rj
-      h(i, 3) = (g12*f11 - g11*f21)*rj
-      h(i, h_ebar) = eb
-    end do
-  end subroutine j2_hencky_axi_lanes
 end module raccord_finite_axi_kernel

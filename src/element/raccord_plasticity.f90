@@ -54,7 +54,8 @@ module raccord_plasticity
   real(wp), parameter :: r23 = 0.816496580927726_wp   ! sqrt(2/3)
   real(wp), parameter :: third = 1.0_wp/3.0_wp
 
-  public :: j2_initial_history, j2_return_small, j2_return_hencky, j2_small_lanes, j2_hencky_lanes, j2_small_trial_lanes
+  public :: j2_initial_history, j2_return_small, j2_return_hencky, j2_small_lanes, j2_hencky_lanes, j2_small_trial_lanes, &
+    j2_hencky_ftt_lanes
 
 contains
 
@@ -232,11 +233,8 @@ contains
     below = nmax <= lim
   end subroutine j2_small_trial_lanes
 
-  !> (P-4), (P-1)..(P-3), (P-5) on n lanes. f(:, 4) in-plane F; with mean,
-  !> jb is the element's volume ratio (mean dilatation) and we leaves out
-  !> the volumetric energy. wmod: a bound of the current wave modulus
-  !> (K + 4G/3 + the largest principal |tau|, the elastic moduli: plastic
-  !> flow only softens) for the stable step.
+  !> (P-4), (P-1)..(P-3), (P-5) on n lanes, plane strain: f(:, 4) the
+  !> in-plane F, F_zz = 1 (j2_hencky_ftt_lanes).
   pure subroutine j2_hencky_lanes(n, m, j2, mean, f, jb, h, tau, we, dwp, wmod)
     integer, intent(in) :: n
     integer, parameter :: ld = fin_chunk_len
@@ -246,8 +244,32 @@ contains
     real(wp), intent(in) :: f(ld, 4), jb(ld)
     real(wp), intent(inout) :: h(ld, nhist)
     real(wp), intent(out) :: tau(ld, 4), we(ld), dwp(ld), wmod(ld)
-    real(wp) :: f11, f21, f12, f22, q11, q22, q12, g11, g12, g21, g22, b11, b22, b12, b33
-    real(wp) :: mid, rad, rr, cs, sn, e1, e2, e3, tr, d1, d2, d3, nrm, fy, dg, sc, eb, p, t1, t2, t3, j, rj
+    real(wp) :: one(ld)
+    one = 1.0_wp
+    call j2_hencky_ftt_lanes(n, m, j2, mean, f, one, jb, h, tau, we, dwp, wmod)
+  end subroutine j2_hencky_lanes
+
+  !> (P-4), (P-1)..(P-3), (P-5) on n lanes. f(:, 4) in-plane F (xx, yx,
+  !> xy, yy) and ftt the out-of-plane stretch: 1 in plane strain, F_tt =
+  !> r/R in axisymmetry, where the hoop direction is the third principal
+  !> direction (be_tr,33 = ftt^2 Cp^-1_33, Cp^-1_33 = 1/det of the in-plane
+  !> Cp^-1: det Cp = 1, the flow is isochoric). h = in-plane Cp^-1 and
+  !> ebar; tau Kirchhoff (xx, yy, xy, 33). With mean, jb is the element's
+  !> volume ratio (mean dilatation) and we leaves out the volumetric
+  !> energy. wmod: a bound of the current wave modulus (K + 4G/3 + the
+  !> largest principal |tau|, the elastic moduli: plastic flow only
+  !> softens) for the stable step.
+  pure subroutine j2_hencky_ftt_lanes(n, m, j2, mean, f, ftt, jb, h, tau, we, dwp, wmod)
+    integer, intent(in) :: n
+    integer, parameter :: ld = fin_chunk_len
+    type(moduli_t), intent(in) :: m
+    type(j2_t), intent(in) :: j2
+    logical, intent(in) :: mean
+    real(wp), intent(in) :: f(ld, 4), ftt(ld), jb(ld)
+    real(wp), intent(inout) :: h(ld, nhist)
+    real(wp), intent(out) :: tau(ld, 4), we(ld), dwp(ld), wmod(ld)
+    real(wp) :: f11, f21, f12, f22, f33, q11, q22, q12, g11, g12, g21, g22, b11, b22, b12, b33
+    real(wp) :: mid, rad, rr, cs, sn, e1, e2, e3, tr, d1, d2, d3, nrm, fy, dg, sc, eb, p, t1, t2, t3, j, j2d, rj
     real(wp) :: a1, a2, x11, x22, x12, g2, rh, wvol, pvol, jbi, eb0
     integer :: i
     g2 = 2.0_wp*m%g
@@ -259,11 +281,12 @@ contains
       f21 = f(i, 2)
       f12 = f(i, 3)
       f22 = f(i, 4)
+      f33 = ftt(i)
       q11 = h(i, 1)
       q22 = h(i, 2)
       q12 = h(i, 3)
       eb0 = h(i, h_ebar)
-      ! (P-4): be_tr = F Cp^-1 F^T (in-plane block), be33 = Cp^-1_33
+      ! (P-4): be_tr = F Cp^-1 F^T (in-plane block), be33 = F_33^2 Cp^-1_33
       g11 = f11*q11 + f12*q12
       g12 = f11*q12 + f12*q22
       g21 = f21*q11 + f22*q12
@@ -271,7 +294,7 @@ contains
       b11 = g11*f11 + g12*f12
       b22 = g21*f21 + g22*f22
       b12 = g11*f21 + g12*f22
-      b33 = 1.0_wp/(q11*q22 - q12*q12)          ! Cp^-1_zz, det Cp = 1
+      b33 = f33*f33/(q11*q22 - q12*q12)         ! Cp^-1_33 = 1/det, det Cp = 1
       ! principal values; (cs, sn) = (cos, sin) of twice the first direction
       mid = 0.5_wp*(b11 + b22)
       rad = sqrt((0.5_wp*(b11 - b22))**2 + b12*b12)
@@ -294,7 +317,8 @@ contains
       d2 = sc*d2
       d3 = sc*d3
       eb = eb0 + r23*dg
-      j = f11*f22 - f21*f12
+      j2d = f11*f22 - f21*f12
+      j = f33*j2d
       ! pressure (Kirchhoff): K tr eps_e, or with mean dilatation K ln(Jbar) J/Jbar
       ! (jbar is read as 1 without mean dilatation, where its term is off)
       jbi = pvol*jb(i) + (1.0_wp - pvol)
@@ -309,13 +333,13 @@ contains
       we(i) = wvol*tr*tr + m%g*(d1*d1 + d2*d2 + d3*d3)
       dwp(i) = (j2%yield0 + 0.5_wp*j2%hardening*(eb0 + eb))*(eb - eb0)
       wmod(i) = m%k + 2.0_wp*g2/3.0_wp + max(abs(t1), abs(t2), abs(t3))
-      ! (P-5): be = exp(2 eps_e) in the same directions, Cp^-1 = F^-1 be F^-T
+      ! (P-5): be = exp(2 eps_e) in the same directions, in-plane Cp^-1 = F^-1 be F^-T
       a1 = exp(2.0_wp*(d1 + tr/3.0_wp))
       a2 = exp(2.0_wp*(d2 + tr/3.0_wp))
       x11 = 0.5_wp*(a1 + a2) + 0.5_wp*(a1 - a2)*cs
       x22 = 0.5_wp*(a1 + a2) - 0.5_wp*(a1 - a2)*cs
       x12 = 0.5_wp*(a1 - a2)*sn
-      rj = 1.0_wp/j
+      rj = 1.0_wp/j2d
       g11 = (f22*x11 - f12*x12)*rj
       g12 = (f22*x12 - f12*x22)*rj
       g21 = (f11*x12 - f21*x11)*rj
@@ -325,5 +349,5 @@ contains
       h(i, 3) = (g12*f11 - g11*f21)*rj
       h(i, h_ebar) = eb
     end do
-  end subroutine j2_hencky_lanes
+  end subroutine j2_hencky_ftt_lanes
 end module raccord_plasticity
