@@ -6,7 +6,7 @@ module raccord_output
   use raccord_log, only: log_info, log_raw, log_warn
   use raccord_strings, only: str
   use raccord_mesh, only: nodes_per_element
-  use raccord_model, only: model_t, amplitude_at
+  use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_time_step, only: time_plan_t
   use raccord_scene, only: scene_t
@@ -28,10 +28,10 @@ module raccord_output
   use raccord_deck, only: write_scene
   use raccord_machine, only: free_disk_bytes, physical_memory_bytes
   use raccord_paths, only: path_dir
+  use raccord_history_columns, only: HISTORY_COL_LEN, history_columns, history_width, fill_history_row
   implicit none
   private
 
-  integer, parameter :: col_len = 40
   !> History rows kept in memory before they are appended to /history of
   !> the results file (and rows per chunk of it): the memory of the history
   !> is one such block, whatever the number of steps (issue #18). Fewer rows
@@ -54,7 +54,7 @@ module raccord_output
     real(wp) :: frame_interval = 0.0_wp
     integer :: frames_written = 0
     integer(i8) :: history_every = 1
-    character(len=col_len), allocatable :: columns(:)
+    character(len=HISTORY_COL_LEN), allocatable :: columns(:)
     real(wp), allocatable :: row(:)
     real(wp), allocatable :: block(:,:)        !< (ncol, rows) history rows not yet in /history
     integer :: nbuf = 0                         !< rows held in block
@@ -285,14 +285,6 @@ contains
     end do
   end function result_blocks
 
-  !> Number of history columns of this model and these pairs.
-  integer function history_width(model, pairs)
-    type(model_t), intent(in) :: model
-    type(contact_pair_t), intent(in) :: pairs(:)
-    character(len=col_len), allocatable :: cols(:)
-    call history_columns(model, pairs, cols)
-    history_width = size(cols)
-  end function history_width
 
   !> Flush every output and record where each stands, for a checkpoint.
   subroutine mark_outputs(out, mark, err)
@@ -510,41 +502,6 @@ contains
     call results_set_text(res, 'scene_path', scene%path, err)
   end subroutine keep_resolved_scene
 
-  !> Column names of the history: energies, then reaction and mean
-  !> displacement per support, then total applied force per surface load.
-  subroutine history_columns(model, pairs, cols)
-    type(model_t), intent(in) :: model
-    type(contact_pair_t), intent(in) :: pairs(:)
-    character(len=col_len), allocatable, intent(out) :: cols(:)
-    character(len=col_len), allocatable :: extra(:)
-    integer :: k
-    cols = [character(len=col_len) :: 'time', 'step', 'kinetic', 'internal', 'external_work', &
-      'damping_work', 'contact_work', 'friction_work', 'energy_balance', 'energy_balance_rel']
-    do k = 1, size(model%supports)
-      associate (s => model%supports(k)%set)
-        extra = [character(len=col_len) :: s // '_Rx', s // '_Ry', s // '_ux', s // '_uy']
-      end associate
-      cols = [cols, extra]
-    end do
-    do k = 1, size(model%loads)
-      associate (s => model%loads(k)%set)
-        extra = [character(len=col_len) :: s // '_Fx', s // '_Fy']
-      end associate
-      cols = [cols, extra]
-    end do
-    ! Per contact pair: force on the slave body, sums of nodal normal and
-    ! tangential forces, active and slipping nodes, solver iterations.
-    do k = 1, size(pairs)
-      associate (s => 'contact' // str(k))
-        extra = [character(len=col_len) :: s // '_Fx', s // '_Fy', s // '_N', s // '_T', s // '_active', &
-          s // '_slip', s // '_iterations']
-      end associate
-      cols = [cols, extra]
-    end do
-    ! With a j2 body: its plastic work, a term of the energy balance
-    ! (last, so that the other columns keep their places).
-    if (model%has_plastic) cols = [cols, [character(len=col_len) :: 'plastic_work']]
-  end subroutine history_columns
 
   !> One text file per contact pair, <stem>.contact<k>.txt: a block per
   !> frame (gnuplot `index`), a line per slave node.
@@ -592,7 +549,7 @@ contains
     last = state%step == state%nsteps
     if (out%first_step < 0) out%first_step = state%step
     if (mod(state%step, out%history_every) == 0 .or. last) then
-      call fill_history_row(out, model, state, pairs)
+      call fill_history_row(model, state, pairs, out%row)
       call history_write(out%hist, out%row, err)
       if (err%failed()) return
       out%nbuf = out%nbuf + 1
@@ -624,40 +581,6 @@ contains
     out%nbuf = 0
   end subroutine flush_history
 
-  subroutine fill_history_row(out, model, state, pairs)
-    type(output_t), intent(inout) :: out
-    type(model_t), intent(in) :: model
-    type(state_t), intent(in) :: state
-    type(contact_pair_t), intent(in) :: pairs(:)
-    integer :: k, j, col
-    real(wp) :: r(2), a
-    associate (e => state%energy, row => out%row)
-      row(1:10) = [state%time, real(state%step, wp), e%kinetic, e%internal, e%external, e%damping, &
-        e%contact, e%friction, e%balance, e%balance/max(e%scale, tiny(1.0_wp))]
-      col = 10
-      do k = 1, size(model%supports)
-        r = 0.0_wp
-        do j = 1, model%ncdof
-          if (model%cdof_support(j) == k) r(model%cdof_comp(j)) = r(model%cdof_comp(j)) + state%reaction(j)
-        end do
-        associate (nodes => model%supports(k)%nodes)
-          row(col+1:col+4) = [r(1), r(2), sum(state%u(1, nodes))/size(nodes), sum(state%u(2, nodes))/size(nodes)]
-        end associate
-        col = col + 4
-      end do
-      do k = 1, size(model%loads)
-        a = amplitude_at(model, model%loads(k)%amplitude, state%time)
-        row(col+1:col+2) = a*sum(model%loads(k)%force, dim=2)
-        col = col + 2
-      end do
-      do k = 1, size(pairs)
-        row(col+1:col+7) = [pairs(k)%force(1), pairs(k)%force(2), pairs(k)%normal_sum, pairs(k)%tangent_sum, &
-          real(pairs(k)%nactive, wp), real(pairs(k)%nslip, wp), real(pairs(k)%iterations, wp)]
-        col = col + 7
-      end do
-      if (model%has_plastic) row(col+1) = e%plastic
-    end associate
-  end subroutine fill_history_row
 
   !> One result frame at t(n): displacement, velocity v(n), reactions, and
   !> nodal stress averaged over the elements around each node.
