@@ -4,13 +4,17 @@
 #
 #   sh axi_finite_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
 #
-# CASE        restart, check
+# CASE        restart, check, nts_friction
 # restart     a neo-Hooke hollow ball (Q8) squashed by a j2 plate in finite
 #             strain, mortar with friction, variable step: stopped by SIGUSR1
 #             in mid-run and restarted, its results equal the continuous
 #             run's bit for bit
 # check       --check of that scene names both bodies' kinematics, and the
 #             run's log the variable step
+# nts_friction the same scene with node-to-segment and friction, the pole
+#             pushed down 0.25 (a quarter of the radius): the multipliers
+#             converge at every step on this coarse curved master (they
+#             did not once), and contact gives at most 1e-3 of the energy
 # Needs sh, awk, cmp, h5dump and h5diff (hdf5-tools); 77 = skipped.
 set -u
 
@@ -63,6 +67,19 @@ check)
   code=$?
   check "run: exit 0 (got $code)" test "$code" -eq 0
   check "the log says the step follows the deforming mesh" has chk/ball.log "the step follows the deforming mesh"
+  ;;
+nts_friction)
+  deck nts
+  sed -e "s/method = 'mortar'/method = 'node_to_segment'/" -e "s/value = 0.0, -0.16,/value = 0.0, -0.25,/" \
+    nts/ball.nml > nts/ball_nts.nml
+  check "the deck is node-to-segment, pole pushed 0.25" has nts/ball_nts.nml "node_to_segment"
+  "$raccord" -q -o nts nts/ball_nts.nml > nts/run.out 2>&1
+  code=$?
+  check "run: exit 0 (got $code)" test "$code" -eq 0
+  check "every step's multipliers converged" has nts/ball_nts.log ", 0 unconverged steps"
+  given=$(awk '/energy given by contact: at most/ { for (i = 1; i < NF; i++) if ($i == "most") print $(i + 1) }' nts/ball_nts.log)
+  check "contact gave at most 1e-3 of the energy scale (got ${given:-none})" \
+    awk -v g="${given:-1}" 'BEGIN { exit !(g + 0 <= 1.0e-3) }'
   ;;
 *)
   echo "unknown case $case_name"
