@@ -44,24 +44,6 @@ block() {
 EOD
 }
 
-# refused NAME BODY_KEYS TEXT...: exit 2, stderr names the body and each TEXT, no file written.
-refused() {
-  name=$1
-  keys=$2
-  shift 2
-  mkdir -p "$name"
-  block "$name/deck.nml" "$keys"
-  "$raccord" -o "$name/out" "$name/deck.nml" > "$name/stdout.txt" 2> "$name/stderr.txt"
-  code=$?
-  check "$name: exit 2 (got $code)" test "$code" -eq 2
-  check "$name: the message names the body" has "$name/stderr.txt" "&body 'block'"
-  for t in "$@"; do
-    check "$name: the message says '$t'" has "$name/stderr.txt" "$t"
-  done
-  check "$name: no Fortran runtime message or backtrace" sh -c "! grep -qiE 'backtrace|fortran runtime|error stop' '$name/stderr.txt'"
-  check "$name: nothing written" test ! -e "$name/out"
-}
-
 # same_history H5 TEXT: /history of H5 holds the rows of the text history
 # TEXT, value for value (the text prints 17 digits: a double exactly).
 same_history() {

@@ -38,24 +38,6 @@ block() {
 EOD
 }
 
-# refused NAME BODY_KEYS TEXT...: exit 2, stderr names the body and each TEXT, no file written.
-refused() {
-  name=$1
-  keys=$2
-  shift 2
-  mkdir -p "$name"
-  block "$name/deck.nml" "$keys"
-  "$raccord" -o "$name/out" "$name/deck.nml" > "$name/stdout.txt" 2> "$name/stderr.txt"
-  code=$?
-  check "$name: exit 2 (got $code)" test "$code" -eq 2
-  check "$name: the message names the body" has "$name/stderr.txt" "&body 'block'"
-  for t in "$@"; do
-    check "$name: the message says '$t'" has "$name/stderr.txt" "$t"
-  done
-  check "$name: no Fortran runtime message or backtrace" sh -c "! grep -qiE 'backtrace|fortran runtime|error stop' '$name/stderr.txt'"
-  check "$name: nothing written" test ! -e "$name/out"
-}
-
 case "$case_name" in
 refuse)
   refused yield_without_j2 "yield_stress = 240.0" "yield_stress is a key of material = 'j2'" "material = 'j2'"

@@ -34,6 +34,26 @@ fresh_work() {
   unset RACCORD_WALLCLOCK_SECONDS
 }
 
+# refused NAME BODY_KEYS TEXT...: the deck that the sourcing script's
+# block DECK BODY_KEYS writes with these body keys is refused: exit 2,
+# stderr names the body 'block' and each TEXT, no backtrace, no file written.
+refused() {
+  name=$1
+  keys=$2
+  shift 2
+  mkdir -p "$name"
+  block "$name/deck.nml" "$keys"
+  "$raccord" -o "$name/out" "$name/deck.nml" > "$name/stdout.txt" 2> "$name/stderr.txt"
+  code=$?
+  check "$name: exit 2 (got $code)" test "$code" -eq 2
+  check "$name: the message names the body" has "$name/stderr.txt" "&body 'block'"
+  for t in "$@"; do
+    check "$name: the message says '$t'" has "$name/stderr.txt" "$t"
+  done
+  check "$name: no Fortran runtime message or backtrace" sh -c "! grep -qiE 'backtrace|fortran runtime|error stop' '$name/stderr.txt'"
+  check "$name: nothing written" test ! -e "$name/out"
+}
+
 # usr1_restart_equals STEM: cont/STEM.nml has run to its end into cont/;
 # run usr1/STEM.nml (the same deck), freeze it past step 300, send SIGUSR1
 # (exit 5 with a checkpoint), restart from the checkpoint, and check that
