@@ -40,28 +40,29 @@ contains
     jac(2, 2) = geo(5) + geo(6)*xi
   end function q4_jacobian
 
-  !> Jacobian J_ik = dx_i/dxi_k at Gauss point g of the element with node
-  !> coordinates xe (theory eq. 1.4): the one expression of init_gauss_maps
-  !> and of a plane small-strain Q8 block's routines, which rebuild it from
-  !> the coordinate copy xn instead of storing H and c.
-  pure function point_jacobian(blk, xe, g) result(jac)
+  !> Jacobian J_ik = dx_i/dxi_k of element e at Gauss point g of a plane
+  !> small-strain Q8 block, from its coordinate copy xn (theory eq. 1.4),
+  !> written as init_gauss_maps writes it (fixed-size xe, the same matmul),
+  !> so that H and c rebuilt here have the bits they had when stored.
+  pure function q8_jacobian(blk, e, g) result(jac)
     type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: xe(:,:)
-    integer, intent(in) :: g
-    real(wp) :: jac(2, 2)
+    integer, intent(in) :: e, g
+    real(wp) :: jac(2, 2), xe(2, max_nen)
+    xe(:, 1:blk%nen) = blk%xn(:, blk%conn(:, e))
     jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
-  end function point_jacobian
+  end function q8_jacobian
 
   !> c = w_g detJ h of element e at Gauss point g.
   pure real(wp) function gauss_c(blk, e, g) result(cg)
     type(elastic_block_t), intent(in) :: blk
     integer, intent(in) :: e, g
-    real(wp) :: jac(2, 2)
+    real(wp) :: jac(2, 2), detj
     if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
       cg = blk%wts(g)*blk%thickness*q4_detj(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
     else if (blk%kernel == KERN_Q8) then
-      jac = point_jacobian(blk, blk%xn(:, blk%conn(:, e)), g)
-      cg = blk%wts(g)*(jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1))*blk%thickness
+      jac = q8_jacobian(blk, e, g)
+      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+      cg = blk%wts(g)*detj*blk%thickness
     else
       cg = blk%c(g, e)
     end if
@@ -85,7 +86,7 @@ contains
       h22 = sq*jac(1, 1)
     else if (blk%kernel == KERN_Q8) then
       ! as init_gauss_maps would store it
-      jac = point_jacobian(blk, blk%xn(:, blk%conn(:, e)), g)
+      jac = q8_jacobian(blk, e, g)
       detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
       sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
       h11 = sq*jac(2, 2)
@@ -353,7 +354,7 @@ contains
       il = e - (ic - 1)*chunk_len
       do g = 1, blk%ngp
         ! J_ik = dx_i/dxi_k (theory eq. 1.4)
-        jac = point_jacobian(blk, xe, g)
+        jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
         detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
         if (.not. (detj > 0.0_wp)) then
           call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(blk%etype) // &
