@@ -159,8 +159,8 @@ module raccord_elastic_block
     ! Q8 one (store_gauss_maps, make_axisymmetric)
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
-    !> (2, nnode) the small-strain plane Q8 block's only geometry: a copy of
-    !> the node coordinates, read through conn by its kernel (raccord_q8_kernel)
+    !> (2, up to the block's highest node) the small-strain plane Q8 block's
+    !> only geometry: a copy of the node coordinates, read through conn by its kernel (raccord_q8_kernel)
     !> and by the set-up and output routines (which rebuild J at a point);
     !> dropped when the block gets another kernel (store_gauss_maps)
     real(wp), allocatable, private :: xn(:,:)
@@ -580,7 +580,9 @@ contains
       if (etype == ELEM_Q4) then
         allocate(blk%q4(chunk_len, nq4, blk%nchunk), blk%geo(ngeo, blk%nel), stat=stat, errmsg=msg)
       else
-        allocate(blk%xn, source=x, stat=stat, errmsg=msg)
+        ! (the nodes up to the block's highest: a model's blocks each keep
+        ! their own copy)
+        allocate(blk%xn, source=x(:, 1:maxval(conn)), stat=stat, errmsg=msg)
       end if
     end if
     if (stat /= 0) then

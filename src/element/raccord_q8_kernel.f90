@@ -20,11 +20,12 @@
 !> force goes back to the nodes with the weights of eq. 6.6:
 !> f_a += -F_c/4 (corners), +F_c/2 (mid-sides) (eq. 6.9).
 !>
-!> The geometry is not stored per Gauss point: the kernel applies the same
-!> gradient to the element's coordinates (less node 1's, kept chunk-major
-!> by the block: 16 reals per element instead of the 36 of H = sqrt(c) J^-1
-!> per point, the larger part of the bytes the step streams at 1e5
-!> elements), and at each point (eq. 6.10), with A = adj(J) = detJ J^-1,
+!> The geometry is not stored per element at all: gather_q8 reads the
+!> element's node coordinates through the connectivity with u (less node
+!> 1's), instead of the 36 reals of H = sqrt(c) J^-1 per element that were
+!> the larger part of the bytes the step streamed at 1e5 elements; the
+!> kernel applies the same gradient to them, and at each point (eq. 6.10),
+!> with A = adj(J) = detJ J^-1,
 !>   g = d A = detJ grad u,  t = (w_g h/detJ) C(sym g) A^T = c sigma J^-T,
 !> f_a += t D_a, one division per point. Per element about 800 flops
 !> (2 x 2 gradients of about 85, 9 points of about 30, 2 force
