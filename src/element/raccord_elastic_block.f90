@@ -16,18 +16,22 @@
 !> per element: 11 reals and about 60 flops per element and step. The cold
 !> map coefficients geo(6, nel) serve mass, body force, stiffness and stress.
 !>
-!> Q8 (theory eq. 6.1): at every Gauss point g the block keeps
-!> H = sqrt(w_g detJ h) J^-1 (2x2, 4 reals), so that with the natural
-!> derivatives D_a(g) = dN_a/d(xi, eta), the same for every element,
+!> Q8 (theory eq. 6.1): at every Gauss point g, with
+!> H = sqrt(w_g detJ h) J^-1 (2x2, 4 reals) and the natural derivatives
+!> D_a(g) = dN_a/d(xi, eta), the same for every element,
 !>   sqrt(c) grad u = (sum_a u_a D_a^T) H,   sqrt(c) sigma = C : sym(.)
 !>   f_a += (sqrt(c) sigma) H^T D_a          (c = w_g detJ h)
-!> which is f = K u with K = sum_g c B^T C B (eq. 3.2). H is stored
-!> h(chunk_len, 4, ngp, nchunk); the cold data c(ngp, nel) serve mass,
-!> body force, stress recovery and the other kernels. The small-strain
+!> which is f = K u with K = sum_g c B^T C B (eq. 3.2). The small-strain
 !> plane Q8 kernel (raccord_q8_kernel, eqs. 6.6-6.10) computes the same
 !> forces by sum factorisation over the tensor 3x3 rule, rebuilding J at the
-!> points from the element's coordinates xq8 (16 reals instead of H's 36:
-!> the step is memory-bound at 1e5 elements, doc/performance.md).
+!> points from the element's coordinates, which it gathers through conn
+!> with u from the block's copy of the node coordinates xn (the step is
+!> memory-bound at 1e5 elements, doc/performance.md "Q8 element step"), so
+!> such a block stores no per-element geometry at all: the element
+!> stiffness, masses, body force and stress output rebuild H and c at a
+!> point from xn too. The other Q8 kernels (finite strain, j2,
+!> axisymmetric) read H stored h(chunk_len, 4, ngp, nchunk) and c(ngp, nel)
+!> (store_gauss_maps).
 !>
 !> Threading (OpenMP, doc/performance.md "Threading"): consecutive chunks
 !> form groups (group_len chunks, up to 32, fixed by the element count) and
@@ -63,7 +67,7 @@ module raccord_elastic_block
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
-  use raccord_q8_kernel, only: kernel_q8
+  use raccord_q8_kernel, only: kernel_q8, gather_q8
   implicit none
   private
 
@@ -151,13 +155,15 @@ module raccord_elastic_block
     real(wp), allocatable, private :: q4(:,:,:)      !< (chunk_len, nq4, nchunk) hot kernel data (eqs. 6.2-6.5)
     integer, private :: q4_shift = 0                 !< axisymmetric Q4: its chunks start at q4(1 + q4_shift, 1, ic)
     real(wp), allocatable, private :: geo(:,:)       !< (ngeo, nel) map coefficients (eq. 6.2), cold
-    ! Q8 only
+    ! Q8 (and axisymmetric Q4) with a kernel other than the plane small-strain
+    ! Q8 one (store_gauss_maps, make_axisymmetric)
     real(wp), allocatable, private :: h(:,:,:,:)     !< (chunk_len, 4, ngp, nchunk) sqrt(c) J^-1, column-major
     real(wp), allocatable, private :: c(:,:)         !< (ngp, nel) w detJ thickness
-    !> (chunk_len, 2, 8, nchunk) the small-strain plane Q8 kernel's data: the
-    !> element's node coordinates less its node 1's (raccord_q8_kernel);
-    !> dropped when the block gets another kernel
-    real(wp), allocatable, private :: xq8(:,:,:,:)
+    !> (2, up to the block's highest node) the small-strain plane Q8 block's
+    !> only geometry: a copy of the node coordinates, read through conn by its kernel (raccord_q8_kernel)
+    !> and by the set-up and output routines (which rebuild J at a point);
+    !> dropped when the block gets another kernel (store_gauss_maps)
+    real(wp), allocatable, private :: xn(:,:)
     ! Finite strain only (Q4 and Q8)
     !> (chunk_len, 4, ngp, nchunk) reference geometry of the finite kernel:
     !> Q8, J0^-1 column-major per Gauss point; Q4, the exact split of the
@@ -291,12 +297,22 @@ module raccord_elastic_block
       real(wp), intent(inout) :: s(:,:), wsum(:)
     end subroutine add_element_small_strain
     !> H = sqrt(c) J^-1 and c at every Gauss point of a Q8 block (theory
-    !> eq. 6.1). Fails (EXIT_INPUT) on detJ <= 0, naming the element.
+    !> eq. 6.1), stored if h and c are allocated (a plane small-strain Q8
+    !> block checks detJ only). Fails (EXIT_INPUT) on detJ <= 0, naming the
+    !> element.
     module subroutine init_gauss_maps(blk, x, err)
       type(elastic_block_t), intent(inout) :: blk
       real(wp), intent(in) :: x(:,:)
       type(error_t), intent(inout) :: err
     end subroutine init_gauss_maps
+    !> H and c of a Q8 block whose kernel is no longer the plane small-strain
+    !> one (make_finite, make_plastic, make_axisymmetric): allocated (if not
+    !> yet), filled by init_gauss_maps, and the coordinate copy xn dropped.
+    module subroutine store_gauss_maps(blk, x, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine store_gauss_maps
     !> Turn a block set up by init_elastic_block into a finite-strain block
     !> (total Lagrangian, doc/theory-finite.md) of the given material
     !> (MAT_NEO_HOOKE or MAT_SVK) and volumetric treatment (VOL_FULL or
@@ -564,7 +580,9 @@ contains
       if (etype == ELEM_Q4) then
         allocate(blk%q4(chunk_len, nq4, blk%nchunk), blk%geo(ngeo, blk%nel), stat=stat, errmsg=msg)
       else
-        allocate(blk%h(chunk_len, 4, ngp, blk%nchunk), blk%c(ngp, blk%nel), stat=stat, errmsg=msg)
+        ! (the nodes up to the block's highest: a model's blocks each keep
+        ! their own copy)
+        allocate(blk%xn, source=x(:, 1:maxval(conn)), stat=stat, errmsg=msg)
       end if
     end if
     if (stat /= 0) then
@@ -615,20 +633,11 @@ contains
       blk%kernel = KERN_Q4
       call init_q4_data(blk, x, err)
     else
+      ! the plane Q8 kernel keeps only the coordinates (xn); H and c are
+      ! built by store_gauss_maps if another kernel takes the block over.
+      ! Here init_gauss_maps only checks detJ > 0 at every point.
       blk%kernel = KERN_Q8
       call init_gauss_maps(blk, x, err)
-      if (err%failed()) return
-      allocate(blk%xq8(chunk_len, 2, nen, blk%nchunk), source=0.0_wp, stat=stat, errmsg=msg)
-      if (stat /= 0) then
-        call raise_error(err, EXIT_INPUT, where // 'cannot allocate the data of ' // str(blk%nel) // &
-          ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
-        return
-      end if
-      do i = 1, blk%nel
-        do a = 1, nen
-          blk%xq8(i - chunk_len*((i - 1)/chunk_len), :, a, (i - 1)/chunk_len + 1) = x(:, conn(a, i)) - x(:, conn(1, i))
-        end do
-      end do
     end if
   end subroutine init_elastic_block
 
@@ -781,7 +790,7 @@ contains
     !> for a j2 block)
     type(block_plastic_t), intent(inout), optional :: plastic
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), en, jm, w2, dis
-    real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len)
+    real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len), xe(chunk_len, 2, max_nen)
     integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
     logical :: reset, mon, watched
     nen = blk%nen
@@ -794,7 +803,7 @@ contains
     dis = 0.0_wp
     !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
     !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, plastic) &
-    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp, act)
+    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp, act, xe)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
@@ -808,19 +817,24 @@ contains
         chunks: do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
           e0 = (ic - 1)*chunk_len
           nc = min(chunk_len, blk%nel - e0)
-          do a = 1, nen
-            do i = 1, nc
-              node = blk%conn(a, e0 + i)
-              ue(i, 1, a) = u(1, node)
-              ue(i, 2, a) = u(2, node)
+          if (blk%kernel == KERN_Q8) then
+            ! the plane Q8 kernel gathers its geometry with u (one pass over conn)
+            call gather_q8(nc, blk%conn(:, e0 + 1:e0 + nc), u, blk%xn, ue, xe)
+          else
+            do a = 1, nen
+              do i = 1, nc
+                node = blk%conn(a, e0 + i)
+                ue(i, 1, a) = u(1, node)
+                ue(i, 2, a) = u(2, node)
+              end do
             end do
-          end do
+          end if
           ! the block's kernel, chosen once when the model was built
           select case (blk%kernel)
           case (KERN_Q4)
             call kernel_q4(nc, blk%lam, blk%mu, blk%q4(:, :, ic), ue, fe)
           case (KERN_Q8)
-            call kernel_q8(nc, blk%lam, blk%mu, blk%gxi(1, 3), blk%wts, blk%thickness, blk%xq8(:, :, :, ic), ue, fe)
+            call kernel_q8(nc, blk%lam, blk%mu, blk%gxi(1, 3), blk%wts, blk%thickness, xe, ue, fe)
           case (KERN_FINITE_Q4)
             call kernel_finite_q4(nc, blk%material, blk%volumetric, blk%moduli, blk%dnref, blk%pg(:, :, :, ic), &
               blk%cw(:, :, ic), blk%vol0(:, ic), blk%diag(:, :, ic), blk%rinv(:, ic), blk%thickness, mon, ue, fe, en, jm, jel, w2)

@@ -38,7 +38,10 @@ contains
         blk%q4_shift = axi_q4_shift(blk%q4)
       end if
     else
+      ! Q8: H and c (the plane kernel kept the coordinates only)
       stat = 0
+      if (.not. allocated(blk%h)) allocate(blk%h(chunk_len, 4, blk%ngp, blk%nchunk), blk%c(blk%ngp, blk%nel), &
+        stat=stat, errmsg=msg)
     end if
     if (stat == 0) allocate(blk%hoop(chunk_len, blk%ngp, blk%nchunk), blk%on_axis(blk%nen, blk%nel), &
       stat=stat, errmsg=msg)
@@ -90,7 +93,7 @@ contains
       if (blk%etype == ELEM_Q4) call put_axi_q4(blk%q4(1 + blk%q4_shift, 1, ic), il, axi_q4_data(xe(:, 1:4)))
     end do
     blk%kernel = merge(KERN_AXI_Q4, KERN_AXI_Q8, blk%etype == ELEM_Q4)
-    if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
+    if (allocated(blk%xn)) deallocate(blk%xn)   ! the plane Q8 kernel's data
   end procedure make_axisymmetric
 
   !> sqrt(c) N_a/r_g of element e at Gauss point g (eps_tt row of B, scaled).

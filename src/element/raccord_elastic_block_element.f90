@@ -40,12 +40,29 @@ contains
     jac(2, 2) = geo(5) + geo(6)*xi
   end function q4_jacobian
 
+  !> Jacobian J_ik = dx_i/dxi_k of element e at Gauss point g of a plane
+  !> small-strain Q8 block, from its coordinate copy xn (theory eq. 1.4),
+  !> written as init_gauss_maps writes it (fixed-size xe, the same matmul),
+  !> so that H and c rebuilt here have the bits they had when stored.
+  pure function q8_jacobian(blk, e, g) result(jac)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e, g
+    real(wp) :: jac(2, 2), xe(2, max_nen)
+    xe(:, 1:blk%nen) = blk%xn(:, blk%conn(:, e))
+    jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
+  end function q8_jacobian
+
   !> c = w_g detJ h of element e at Gauss point g.
   pure real(wp) function gauss_c(blk, e, g) result(cg)
     type(elastic_block_t), intent(in) :: blk
     integer, intent(in) :: e, g
+    real(wp) :: jac(2, 2), detj
     if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
       cg = blk%wts(g)*blk%thickness*q4_detj(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
+    else if (blk%kernel == KERN_Q8) then
+      jac = q8_jacobian(blk, e, g)
+      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+      cg = blk%wts(g)*detj*blk%thickness
     else
       cg = blk%c(g, e)
     end if
@@ -61,6 +78,15 @@ contains
     if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
       ! H = sqrt(c) J^-1 from the map (eqs. 1.4, 6.2), as stored for Q8
       jac = q4_jacobian(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
+      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+      sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
+      h11 = sq*jac(2, 2)
+      h21 = -sq*jac(2, 1)
+      h12 = -sq*jac(1, 2)
+      h22 = sq*jac(1, 1)
+    else if (blk%kernel == KERN_Q8) then
+      ! as init_gauss_maps would store it
+      jac = q8_jacobian(blk, e, g)
       detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
       sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
       h11 = sq*jac(2, 2)
@@ -310,14 +336,18 @@ contains
   end procedure add_element_small_strain
 
   !> H = sqrt(c) J^-1 and c = w detJ thickness at every Gauss point of a Q8
-  !> block (theory eq. 6.1; init_elastic_block has allocated them): the Q8
-  !> kernel's data, and J0^-1 = H/sqrt(c) of the finite Q8 kernel. Fails
-  !> (EXIT_INPUT) on detJ <= 0, naming the element.
+  !> block (theory eq. 6.1), if h and c are allocated (store_gauss_maps):
+  !> J0^-1 = H/sqrt(c) of the finite and j2 Q8 kernels. A plane small-strain
+  !> Q8 block stores neither (its kernel rebuilds J from the coordinates)
+  !> and only checks detJ. Fails (EXIT_INPUT) on detJ <= 0, naming the
+  !> element.
   module procedure init_gauss_maps
     character(len=*), parameter :: where = 'init_elastic_block: '
     real(wp) :: jac(2, 2), detj, cg, sq, xe(2, max_nen)
     integer :: e, g, ic, il
-    blk%h = 0.0_wp
+    logical :: store
+    store = allocated(blk%h)
+    if (store) blk%h = 0.0_wp
     do e = 1, blk%nel
       xe(:, 1:blk%nen) = x(:, blk%conn(:, e))
       ic = (e - 1)/chunk_len + 1
@@ -332,6 +362,7 @@ contains
             '; its nodes must be counter-clockwise and the element not degenerate')
           return
         end if
+        if (.not. store) cycle
         cg = blk%wts(g)*detj*blk%thickness
         blk%c(g, e) = cg
         sq = sqrt(cg)/detj
@@ -343,4 +374,21 @@ contains
       end do
     end do
   end procedure init_gauss_maps
+
+  !> H and c of a Q8 block that leaves the plane small-strain kernel.
+  module procedure store_gauss_maps
+    character(len=256) :: msg
+    integer :: stat
+    if (blk%etype /= ELEM_Q8) return
+    if (.not. allocated(blk%h)) then
+      allocate(blk%h(chunk_len, 4, blk%ngp, blk%nchunk), blk%c(blk%ngp, blk%nel), stat=stat, errmsg=msg)
+      if (stat /= 0) then
+        call raise_error(err, EXIT_INPUT, 'store_gauss_maps: cannot allocate the data of ' // str(blk%nel) // &
+          ' elements: ' // trim(msg) // '; use a smaller mesh or more memory')
+        return
+      end if
+      call init_gauss_maps(blk, x, err)
+    end if
+    if (allocated(blk%xn)) deallocate(blk%xn)
+  end procedure store_gauss_maps
 end submodule raccord_elastic_block_element

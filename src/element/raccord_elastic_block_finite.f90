@@ -37,8 +37,9 @@ contains
     blk%volumetric = volumetric
     blk%density = density
     blk%moduli = make_moduli(blk%young, blk%poisson)
+    call store_gauss_maps(blk, x, err)   ! Q8: H and c in place of the plane kernel's xn
+    if (err%failed()) return
     blk%kernel = merge(KERN_FINITE_Q4, KERN_FINITE_Q8, blk%etype == ELEM_Q4)
-    if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
     if (blk%axisymmetric) blk%kernel = merge(KERN_FINITE_AXI_Q4, KERN_FINITE_AXI_Q8, blk%etype == ELEM_Q4)
     call init_reference_data(blk, x, err)
     if (blk%axisymmetric .and. .not. err%failed()) call init_finite_axi(blk, err)

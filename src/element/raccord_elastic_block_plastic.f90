@@ -28,6 +28,8 @@ contains
       call raise_error(err, EXIT_INPUT, where // 'the density must be > 0, got ' // str(density))
       return
     end if
+    call store_gauss_maps(blk, x, err)   ! Q8: H and c in place of the plane kernel's xn
+    if (err%failed()) return
     blk%kinematics = kinematics
     blk%material = MAT_J2
     blk%volumetric = volumetric
@@ -54,7 +56,6 @@ contains
       blk%kernel = merge(KERN_J2_SMALL_Q4, KERN_J2_SMALL_Q8, blk%etype == ELEM_Q4)
       call init_reference_data(blk, x, err)
     end if
-    if (allocated(blk%xq8)) deallocate(blk%xq8)   ! the plane Q8 kernel's data
   contains
     !> c and V_e of an axisymmetric block in the kernels' chunk layout
     !> (padding lanes: c = 1, never scattered).

@@ -20,11 +20,12 @@
 !> force goes back to the nodes with the weights of eq. 6.6:
 !> f_a += -F_c/4 (corners), +F_c/2 (mid-sides) (eq. 6.9).
 !>
-!> The geometry is not stored per Gauss point: the kernel applies the same
-!> gradient to the element's coordinates (less node 1's, kept chunk-major
-!> by the block: 16 reals per element instead of the 36 of H = sqrt(c) J^-1
-!> per point, the larger part of the bytes the step streams at 1e5
-!> elements), and at each point (eq. 6.10), with A = adj(J) = detJ J^-1,
+!> The geometry is not stored per element at all: gather_q8 reads the
+!> element's node coordinates through the connectivity with u (less node
+!> 1's), instead of the 36 reals of H = sqrt(c) J^-1 per element that were
+!> the larger part of the bytes the step streamed at 1e5 elements; the
+!> kernel applies the same gradient to them, and at each point (eq. 6.10),
+!> with A = adj(J) = detJ J^-1,
 !>   g = d A = detJ grad u,  t = (w_g h/detJ) C(sym g) A^T = c sigma J^-T,
 !> f_a += t D_a, one division per point. Per element about 800 flops
 !> (2 x 2 gradients of about 85, 9 points of about 30, 2 force
@@ -42,11 +43,45 @@ module raccord_q8_kernel
   implicit none
   private
 
-  public :: kernel_q8
+  public :: kernel_q8, gather_q8
 
   integer, parameter :: chunk_len = fin_chunk_len, max_nen = 8, ngp = 9
 
 contains
+
+  !> The chunk's nodal values ue and coordinates less node 1's xq (the
+  !> kernel's geometry) of nc elements with nodes conn(:, 1:nc), from the
+  !> displacements u(2, nnode) and the coordinates x(2, nnode), in one pass
+  !> over conn. xq(:, :, a) = x_a - x_1 is the subtraction the block did once
+  !> at set-up when it stored them, so the forces keep their bits. Scalar
+  !> loads (novector): the 8-lane hardware gather of this CPU was slower
+  !> than them here (doc/performance.md, "Q8 element step").
+  pure subroutine gather_q8(nc, conn, u, x, ue, xq)
+    integer, intent(in) :: nc, conn(:,:)
+    real(wp), intent(in) :: u(:,:), x(:,:)
+    real(wp), intent(out) :: ue(chunk_len, 2, max_nen), xq(chunk_len, 2, max_nen)
+    real(wp) :: x1, y1
+    integer :: a, i, node
+    ! element by element: node 1's coordinates stay in registers and each
+    ! element's 8 node numbers are one contiguous read
+    !GCC$ novector
+    do i = 1, nc
+      node = conn(1, i)
+      ue(i, 1, 1) = u(1, node)
+      ue(i, 2, 1) = u(2, node)
+      x1 = x(1, node)
+      y1 = x(2, node)
+      xq(i, 1, 1) = 0.0_wp
+      xq(i, 2, 1) = 0.0_wp
+      do a = 2, max_nen
+        node = conn(a, i)
+        ue(i, 1, a) = u(1, node)
+        ue(i, 2, a) = u(2, node)
+        xq(i, 1, a) = x(1, node) - x1
+        xq(i, 2, a) = x(2, node) - y1
+      end do
+    end do
+  end subroutine gather_q8
 
   !> fe = K_e ue for the first nc elements of a chunk (eqs. 6.6-6.10): r the
   !> positive 3-point Gauss abscissa of the block's rule, w its 3x3 weights,
