@@ -471,8 +471,17 @@ contains
         end do
         w%xr(p - p1 + 1) = r
       end do
-      call run_solve(cs, p1, nc, .true., w, info)
-      if (info /= 0) return
+      if (nc == 1) then
+        ! one open constraint alone (always so with G1 diagonal)
+        if (cs%g1(0, w%olist(p1)) == 0.0_wp) then
+          info = -1
+          return
+        end if
+        w%xr(1) = w%xr(1)/cs%g1(0, w%olist(p1))
+      else
+        call run_solve(cs, p1, nc, .true., w, info)
+        if (info /= 0) return
+      end if
       do p = p1, p2
         w%gn(w%olist(p)) = w%xr(p - p1 + 1)
       end do
