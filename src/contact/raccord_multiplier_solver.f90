@@ -12,11 +12,16 @@
 !> with K = B M^-1 B' banded (B: the constraint rows). It is solved by a
 !> primal-dual active-set iteration (semismooth Newton for the complementarity
 !> functions min(F, c g) and the friction projection): for fixed open /
-!> stick / slip sets the conditions are linear, and the unknowns
-!> (lambda_j, gn_j [, tau_j, gt_j]) interleaved node by node give one banded
-!> system, solved by a banded LU with partial pivoting (raccord_band_solver,
-!> LAPACK's dgbsv algorithm without the per-column BLAS calls). The sets
-!> are updated from
+!> stick / slip sets the conditions are linear. Without friction they are
+!> solved on the active multipliers alone (the Delassus form, band
+!> Cholesky: solve_frictionless); with friction and a diagonal G1
+!> (node-to-segment) on lambda of the active and tau of the sticking
+!> constraints (solve_diagonal_friction); otherwise (mortar with friction)
+!> the unknowns (lambda_j, gn_j [, tau_j, gt_j]) interleaved node by node,
+!> the known gaps and slips left out, give one banded saddle system, solved
+!> by a banded LU with partial pivoting (raccord_band_solver, LAPACK's dgbsv
+!> algorithm without the per-column BLAS calls). doc/theory-contact.md,
+!> section 3. The sets are updated from
 !>   active:  F_j - c_j gn_j > 0,     stick: |T_j - c_j gt_j| <= mu F_j,
 !> (F = G1 lambda, T = G1 tau, c_j = G1_jj^2 / (dt^2 Knn_jj)) until they no
 !> longer change; the solution then satisfies (19) exactly.
@@ -672,15 +677,14 @@ contains
   end function g1_at
 
   !> Unknowns for the current sets, constraint by constraint in chain
-  !> order: lambda_j, gn_j; with friction tau_j, and gt_j unless j sticks
-  !> (gt_j = 0: its row and column drop out). Eliminating the known slips
-  !> takes a quarter of the unknowns out of a zone in stick and narrows its
-  !> band (the banded LU costs about n kl (kl + ku) with the local band).
-  !> The known gaps of the constraints in contact are kept as unknowns
-  !> with their unit rows: eliminating them too changed the pivot order
-  !> enough to change the converged active set of a badly conditioned
-  !> case (mortar P0, a slave of 4 facets on a curved master, 1:8;
-  !> test_curved). Each condition row takes the index of its unknown: the
+  !> order: lambda_j, gn_j unless j is in contact (gn_j = 0, with
+  !> eliminate_gaps); with friction tau_j, and gt_j unless j sticks
+  !> (gt_j = 0: its row and column drop out). Eliminating the known gaps
+  !> and slips halves the unknowns of a zone in stick and narrows its band
+  !> (the banded LU costs about n kl (kl + ku) with the local band). (The
+  !> frictionless case, where eliminating the gaps here once changed the
+  !> active set of test_curved's badly conditioned mortar P0 case, no
+  !> longer comes here: solve_frictionless.) Each condition row takes the index of its unknown: the
   !> gap definition that of lambda_j, the normal condition that of gn_j,
   !> the slip definition that of tau_j, the tangential condition that of
   !> gt_j. Returns the size and the band.
