@@ -15,7 +15,11 @@ module raccord_band_solver
   implicit none
   private
 
-  public :: band_solve
+  public :: band_solve, band_cholesky_solve
+
+  !> A Cholesky pivot below this fraction of its diagonal entry means a row
+  !> (nearly) dependent on the ones before it: reported as singular.
+  real(wp), parameter :: CHOL_TOL = 1.0e-10_wp
 
 contains
 
@@ -133,4 +137,55 @@ contains
       end do
     end do
   end subroutine band_solve
+
+  !> Solve R x = b in place for R symmetric positive definite with half
+  !> band kr, by band Cholesky R = L L' (left-looking, plain loops: the
+  !> Delassus systems of the multiplier solve have half bands of 2 to 10,
+  !> where a library call costs more than its arithmetic). rb holds the
+  !> lower band, rb(d + 1, k) = R(k + d, k), and returns L in its place.
+  !> info = j > 0 when the j-th pivot is not above CHOL_TOL of R(j, j)
+  !> (R singular or not positive definite to working precision).
+  pure subroutine band_cholesky_solve(n, kr, rb, b, info)
+    integer, intent(in) :: n, kr
+    real(wp), intent(inout) :: rb(:,:)        !< (>= kr + 1, >= n)
+    real(wp), intent(inout) :: b(:)           !< (>= n) right-hand side in, solution out
+    integer, intent(out) :: info
+    integer :: i, j, k
+    real(wp) :: s, t
+    info = 0
+    do j = 1, n
+      s = rb(1, j)
+      do k = max(1, j - kr), j - 1
+        s = s - rb(j - k + 1, k)**2
+      end do
+      if (.not. (s > CHOL_TOL*rb(1, j))) then
+        info = j
+        return
+      end if
+      s = sqrt(s)
+      rb(1, j) = s
+      do i = j + 1, min(n, j + kr)
+        t = rb(i - j + 1, j)
+        do k = max(1, i - kr), j - 1
+          t = t - rb(i - k + 1, k)*rb(j - k + 1, k)
+        end do
+        rb(i - j + 1, j) = t/s
+      end do
+    end do
+    ! L y = b, then L' x = y.
+    do j = 1, n
+      t = b(j)
+      do k = max(1, j - kr), j - 1
+        t = t - rb(j - k + 1, k)*b(k)
+      end do
+      b(j) = t/rb(1, j)
+    end do
+    do j = n, 1, -1
+      t = b(j)
+      do i = j + 1, min(n, j + kr)
+        t = t - rb(i - j + 1, j)*b(i)
+      end do
+      b(j) = t/rb(1, j)
+    end do
+  end subroutine band_cholesky_solve
 end module raccord_band_solver
