@@ -128,23 +128,32 @@ stopped() {
 ckpt_step() { h5dump -d /state/counters "$1" 2>/dev/null | awk -F'[:,]' '/\(0\):/ { print $2 + 0; exit }'; }
 last_row_step() { awk '!/^#/ && NF > 2 { s = $2 } END { print s + 0 }' "$1"; }
 
-# start_frozen DIR COND ARGS...: start raccord ARGS in the background, wait
-# until the shell condition COND holds (checked every 10 ms, 60 s at most),
-# then freeze it (SIGSTOP); sets pid. Fails when raccord ended first.
+# start_frozen DIR COND ARGS...: start raccord ARGS in the background and
+# freeze it (SIGSTOP) with the shell condition COND holding; sets pid. The
+# run is frozen at once and let go in slices of about 2 ms (SIGCONT, sleep,
+# SIGSTOP), COND being checked while it is frozen: a fast run (a few
+# thousand steps per second) cannot slip past the condition while the poll
+# itself takes time, as it could when raccord ran freely between polls.
+# Fails when raccord ended first or COND never holds (about 2 minutes).
 start_frozen() {
   _d=$1
   _cond=$2
   shift 2
   "$raccord" -q "$@" > "$_d/run.out" 2>&1 &
   pid=$!
+  kill -STOP "$pid" 2>/dev/null
   _n=0
   while ! eval "$_cond"; do
-    if ! kill -0 "$pid" 2>/dev/null; then fail "raccord ended before it could be stopped"; finish; fi
+    if ! kill -0 "$pid" 2>/dev/null || [ -e "$_d/slide.h5" ]; then
+      fail "raccord ended before it could be stopped"
+      finish
+    fi
     _n=$((_n + 1))
-    [ "$_n" -lt 6000 ] || { kill -9 "$pid"; fail "condition never met: $_cond"; finish; }
-    sleep 0.01
+    [ "$_n" -lt 30000 ] || { kill -9 "$pid"; fail "condition never met: $_cond"; finish; }
+    kill -CONT "$pid"
+    sleep 0.002
+    kill -STOP "$pid" 2>/dev/null
   done
-  kill -STOP "$pid"
   if [ -e "$_d/slide.h5" ]; then fail "raccord completed before it was stopped"; finish; fi
 }
 
