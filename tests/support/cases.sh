@@ -63,14 +63,18 @@ usr1_restart_equals() {
   stem=$1
   "$raccord" -q -o usr1 "usr1/$stem.nml" > usr1/run.out 2>&1 &
   pid=$!
+  # Frozen at once and let go in slices of about 2 ms, the step checked
+  # while it is frozen, so that a fast run cannot pass its end between polls.
+  kill -STOP "$pid" 2>/dev/null
   n=0
   while [ "$(awk '!/^#/ && NF > 2 { s = $2 } END { print s + 0 }' "usr1/$stem.history.txt.part" 2>/dev/null || echo 0)" -lt 300 ]; do
-    kill -0 "$pid" 2>/dev/null || { fail "raccord ended before it could be stopped"; finish; }
+    if ! kill -0 "$pid" 2>/dev/null || [ -e "usr1/$stem.h5" ]; then fail "raccord ended before it could be stopped"; finish; fi
     n=$((n + 1))
-    [ "$n" -lt 6000 ] || { kill -9 "$pid"; fail "never reached step 300"; finish; }
-    sleep 0.01
+    [ "$n" -lt 30000 ] || { kill -9 "$pid"; fail "never reached step 300"; finish; }
+    kill -CONT "$pid"
+    sleep 0.002
+    kill -STOP "$pid" 2>/dev/null
   done
-  kill -STOP "$pid"
   kill -USR1 "$pid"
   kill -CONT "$pid"
   wait "$pid"
