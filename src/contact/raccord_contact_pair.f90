@@ -51,6 +51,7 @@ module raccord_contact_pair
     real(wp), allocatable :: sg_c(:)
     real(wp), allocatable :: xcur(:,:), xpred(:,:), dcur(:,:), fc(:,:), ft(:,:), nodal_normal(:,:)
     integer, allocatable :: touched(:)
+    integer, allocatable :: cand(:)                !< (master nseg) node-to-segment scratch: a node's candidates
     integer :: ntouched = 0                        !< nodes touched by this step's contact forces
     integer :: force_lo = 1, force_hi = 0          !< span of the touched slave nodes in chain order
     ! The slave nodes whose per-node results were set at the last step (the
@@ -149,6 +150,7 @@ contains
         allocate(pair%mark(model%nnode), source=.false.)
         allocate(pair%touched(pair%slave%nnode + pair%master%nnode))
         allocate(pair%set_node(pair%slave%nnode))
+        allocate(pair%cand(pair%master%nseg))
         allocate(pair%chain_of(model%nnode), source=0)
         pair%chain_of(pair%slave%node) = [(j, j = 1, pair%slave%nnode)]
         pair%gap = huge(1.0_wp)
@@ -239,7 +241,7 @@ contains
         pair%verlet, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
-        pair%verlet, pair%trib, pair%nodal_normal, pair%cs)
+        pair%verlet, pair%trib, pair%nodal_normal, pair%cand, pair%cs)
     end select
     m = pair%cs%m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.

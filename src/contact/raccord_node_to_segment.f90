@@ -25,7 +25,7 @@ module raccord_node_to_segment
   use raccord_kinds, only: wp, pi
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
-  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
+  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
   use raccord_mortar_segments, only: outward_normal, normal_field, project_along_field, cross2, NODE_XI
@@ -48,16 +48,17 @@ contains
   !> Candidates come from the lists of raccord_contact_verlet; only the
   !> slave nodes with candidates, and the master segments near them, are
   !> visited (the pairs are those of the full search, in the same order).
-  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, v, trib, nodal_normal, cs)
+  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, v, trib, nodal_normal, cand, cs)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
     real(wp), intent(in) :: reach
     type(verlet_t), intent(inout) :: v
     real(wp), intent(inout) :: trib(:)           !< (slave%nnode) scratch: tributary lengths
     real(wp), intent(inout) :: nodal_normal(:,:) !< (2, nnode) scratch: master nodal normals
+    integer, intent(inout) :: cand(:)            !< (master%nseg) scratch: a node's candidates
     type(constraint_set_t), intent(inout) :: cs
-    integer :: i, p, q, k, best, nen, a, tn
-    real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
+    integer :: i, p, q, k, best, nen, a, tn, ncand
+    real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, n_m(2), g, sh(3), dsh(3)
     real(wp) :: nn(2, 3), dnf(2), sw(4)
     integer :: k2, sn(4), t0, gap, tt
     logical :: fold
@@ -98,11 +99,13 @@ contains
       xp = x(:, p)
       best = 0
       best_dist = huge(1.0_wp)
-      do q = v%ptr(i), v%ptr(i + 1) - 1
-        k = v%item(q)
-        if (.not. verlet_overlaps(v, k, xp, xp)) cycle
+      call verlet_candidates(v, i, xp, xp, cand, ncand)
+      do q = 1, ncand
+        k = cand(q)
         call load_segment(master, x, k, xs)
-        call project_on_segment(nen, xs, xp, s, foot, tang)
+        ! (The closest segment's tangent is not needed: the normal comes
+        ! from smooth_foot or field_foot below.)
+        call project_on_segment(nen, xs, xp, s, foot)
         ! A foot beyond the segment's end belongs to the neighbour, or, at
         ! the end of the master chain, to nobody: the node has slid off.
         beyond = abs(s) > 1.0_wp + eps
@@ -113,14 +116,12 @@ contains
           ! vertex as the closest point; the neighbour gives the normal too.
           s = max(-1.0_wp, min(1.0_wp, s))
           call segment_point(nen, xs, s, foot, tang)
-          tang = tang/sqrt(tang(1)**2 + tang(2)**2)
         end if
         dist = sqrt((xp(1) - foot(1))**2 + (xp(2) - foot(2))**2)
         if (dist < best_dist) then
           best_dist = dist
           best = k
           best_s = s
-          best_t = tang
         end if
       end do
       if (best == 0) cycle near_nodes
