@@ -155,6 +155,9 @@ contains
         pairs(k)%iterations_total, pairs(k)%steps], where, err)
       call h5_write_real(file, g // 'residual_max', [pairs(k)%residual_max], where, err)
       call h5_write_i8(file, g // 'profile_bytes', [mark%profile_bytes(k)], where, err)
+      ! The feet that warm-start node-to-segment's projections (raccord_contact_verlet).
+      call h5_write_int(file, g // 'foot_segment', pairs(k)%verlet%warm_seg, where, err)
+      call h5_write_real(file, g // 'foot_t', pairs(k)%verlet%warm_t, where, err)
     end do
     call h5_write_real(file, '/watch', watch, where, err)
     ! Outputs: frames and history rows so far (the rows themselves are in
@@ -300,6 +303,12 @@ contains
         call h5_read_i8(file, g // 'counters', counters, where, err)
         call h5_read_real(file, g // 'residual_max', r1, where, err)
         call h5_read_i8(file, g // 'profile_bytes', one, where, err)
+        ! Without them (an older checkpoint) the projections start cold: the
+        ! same feet to round-off.
+        if (h5_link_exists(file, g // 'foot_t')) then
+          call h5_read_int(file, g // 'foot_segment', pairs(k)%verlet%warm_seg, where, err)
+          call h5_read_real(file, g // 'foot_t', pairs(k)%verlet%warm_t, where, err)
+        end if
         if (err%failed()) exit steps
         pairs(k)%failed_streak = int(counters(1))
         pairs(k)%failed_total = counters(2)

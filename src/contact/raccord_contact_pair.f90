@@ -17,7 +17,7 @@ module raccord_contact_pair
   use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_contact_surface, only: contact_surface_t, build_contact_surface
-  use raccord_contact_verlet, only: verlet_t, verlet_init
+  use raccord_contact_verlet, only: verlet_t, verlet_init, verlet_check
   use raccord_constraint_set, only: constraint_set_t
   use raccord_multiplier_solver, only: solver_work_t, solve_multipliers, ST_OPEN, ST_STICK, ST_SLIP
   use raccord_node_to_segment, only: build_node_to_segment
@@ -51,7 +51,14 @@ module raccord_contact_pair
     real(wp), allocatable :: sg_c(:)
     real(wp), allocatable :: xcur(:,:), xpred(:,:), dcur(:,:), fc(:,:), ft(:,:), nodal_normal(:,:)
     integer, allocatable :: touched(:)
+    integer, allocatable :: cand(:)                !< (master nseg) node-to-segment scratch: a node's candidates
     integer :: ntouched = 0                        !< nodes touched by this step's contact forces
+    integer :: force_lo = 1, force_hi = 0          !< span of the touched slave nodes in chain order
+    ! The slave nodes whose per-node results were set at the last step (the
+    ! others hold the open values): reset these only (nset < 0: all).
+    integer :: nset = -1
+    integer, allocatable :: set_node(:)
+    integer, allocatable :: chain_of(:)            !< (nnode) chain position of a slave surface node, 0 elsewhere
     logical, allocatable :: mark(:)
     ! Step report.
     real(wp) :: force(2) = 0.0_wp                  !< resultant contact force on the slave body
@@ -79,7 +86,7 @@ contains
     type(model_t), intent(in) :: model
     type(contact_pair_t), allocatable, intent(out) :: pairs(:)
     type(error_t), intent(inout) :: err
-    integer :: k, np, bs, bm
+    integer :: k, np, bs, bm, j
     character(len=:), allocatable :: where
 
     np = 0
@@ -142,6 +149,11 @@ contains
           pair%ft(2, model%nnode), pair%nodal_normal(2, model%nnode), source=0.0_wp)
         allocate(pair%mark(model%nnode), source=.false.)
         allocate(pair%touched(pair%slave%nnode + pair%master%nnode))
+        allocate(pair%set_node(pair%slave%nnode))
+        allocate(pair%cand(pair%master%nseg))
+        allocate(pair%chain_of(model%nnode), source=0)
+        pair%chain_of(pair%slave%node) = [(j, j = 1, pair%slave%nnode)]
+        pair%gap = huge(1.0_wp)
       end associate
     end do
   end subroutine init_contact_pairs
@@ -212,16 +224,24 @@ contains
     real(wp) :: wc0, lmin
 
     call system_clock(c0)
-    ! Positions at t(n), predicted positions and increments, at the surface nodes only.
-    call load_surface(pair%slave)
-    call load_surface(pair%master)
+    ! Positions at t(n), predicted positions and increments, at the surface
+    ! nodes only; while the candidate lists hold, at the nodes near the
+    ! other surface only (raccord_contact_verlet: the others are checked
+    ! for their displacement and not read).
+    call verlet_check(pair%verlet, model%x, state%u, pair%slave, pair%master)
+    if (pair%verlet%valid) then
+      call load_nodes(pair%verlet%load(1:pair%verlet%nload))
+    else
+      call load_nodes(pair%slave%node)
+      call load_nodes(pair%master%node)
+    end if
     select case (pair%method)
     case (METHOD_MORTAR)
       call build_mortar(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, pair%multiplier, &
         pair%verlet, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &
-        pair%verlet, pair%trib, pair%nodal_normal, pair%cs)
+        pair%verlet, pair%trib, pair%nodal_normal, pair%cand, pair%cs)
     end select
     m = pair%cs%m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.
@@ -284,14 +304,29 @@ contains
         'To start without it, move the slave surface out of the master in the mesh.')
     end if
 
-    ! Per slave node results (open unless constrained this step).
-    pair%status = ST_OPEN
-    pair%gap = huge(1.0_wp)
-    pair%lam_n = 0.0_wp
-    pair%lam_t = 0.0_wp
-    pair%pressure = 0.0_wp
-    pair%shear = 0.0_wp
-    pair%slip = 0.0_wp
+    ! Per slave node results (open unless constrained this step): the open
+    ! values back at the nodes set last step (all nodes after a restart).
+    if (pair%nset < 0) then
+      pair%status = ST_OPEN
+      pair%gap = huge(1.0_wp)
+      pair%lam_n = 0.0_wp
+      pair%lam_t = 0.0_wp
+      pair%pressure = 0.0_wp
+      pair%shear = 0.0_wp
+      pair%slip = 0.0_wp
+    else
+      do j = 1, pair%nset
+        i = pair%set_node(j)
+        pair%status(i) = ST_OPEN
+        pair%gap(i) = huge(1.0_wp)
+        pair%lam_n(i) = 0.0_wp
+        pair%lam_t(i) = 0.0_wp
+        pair%pressure(i) = 0.0_wp
+        pair%shear(i) = 0.0_wp
+        pair%slip(i) = 0.0_wp
+      end do
+    end if
+    pair%nset = 0
     pair%normal_sum = 0.0_wp
     pair%tangent_sum = 0.0_wp
     pair%nactive = 0
@@ -313,6 +348,8 @@ contains
         pair%tangent_sum = pair%tangent_sum + pair%work%ft(j)
         cycle
       end if
+      pair%nset = pair%nset + 1
+      pair%set_node(pair%nset) = i
       pair%status(i) = pair%st_c(j)
       pair%sigma(i) = pair%sg_c(j)
       pair%gap(i) = pair%work%gn(j)
@@ -335,22 +372,25 @@ contains
       if (pair%st_c(j) /= ST_OPEN) pair%nactive = pair%nactive + 1
       if (pair%st_c(j) == ST_SLIP) pair%nslip = pair%nslip + 1
     end do
+    ! Resultant on the slave: fc is zero off the touched nodes, so the sum
+    ! in chain order over the span of the touched slave nodes is the sum
+    ! over the whole surface, term for term.
     pair%force = 0.0_wp
-    do i = 1, pair%slave%nnode
+    do i = pair%force_lo, pair%force_hi
       p = pair%slave%node(i)
       pair%force = pair%force + pair%fc(:, p)
     end do
   contains
-    subroutine load_surface(surf)
-      type(contact_surface_t), intent(in) :: surf
+    subroutine load_nodes(nodes)
+      integer, intent(in) :: nodes(:)
       integer :: q, n
-      do q = 1, surf%nnode
-        n = surf%node(q)
+      do q = 1, size(nodes)
+        n = nodes(q)
         pair%xcur(:, n) = model%x(:, n) + state%u(:, n)
         pair%xpred(:, n) = model%x(:, n) + state%u_next(:, n)
         pair%dcur(:, n) = state%u_next(:, n) - state%u(:, n)
       end do
-    end subroutine load_surface
+    end subroutine load_nodes
   end subroutine enforce_pair
 
   !> Overlap of the surfaces at t = 0, before any contact force: the gap of
@@ -429,13 +469,19 @@ contains
           pair%ft(:, p) = 0.0_wp
         end if
         pair%fc(:, p) = pair%fc(:, p) + pair%cs%ent_w(e)*fvec
-        pair%ft(:, p) = pair%ft(:, p) + pair%cs%ent_w(e)*tvec
+        ! Frictionless: tau = 0 and ft stays 0 (its work below adds zeros).
+        if (pair%mu > 0.0_wp) pair%ft(:, p) = pair%ft(:, p) + pair%cs%ent_w(e)*tvec
       end do
     end do
-    ! Nodes of the slave surface not touched this step carry no force.
-    do j = 1, pair%slave%nnode
-      p = pair%slave%node(j)
-      if (.not. pair%mark(p)) pair%fc(:, p) = 0.0_wp
+    ! Nodes of the slave surface not touched this step carry no force (fc
+    ! was zeroed at the last step's nodes above and is set at this step's).
+    pair%force_lo = pair%slave%nnode + 1
+    pair%force_hi = 0
+    do t = 1, nt
+      j = pair%chain_of(pair%touched(t))
+      if (j == 0) cycle
+      pair%force_lo = min(pair%force_lo, j)
+      pair%force_hi = max(pair%force_hi, j)
     end do
     dh = 0.0_wp
     wc = 0.0_wp

@@ -25,6 +25,11 @@ module raccord_contact_verlet
   real(wp), parameter, public :: SKIN_OF_REACH = 0.5_wp
   !> Rebuild a little before the bound (the padded boxes carry round-off).
   real(wp), parameter :: SKIN_SAFETY = 0.9_wp
+  !> Segments either side of the near ones whose nodes a step reads: the
+  !> mortar multiplier weights read the slave segments next to a near one,
+  !> node-to-segment the master nodal normals read the segments at the
+  !> nodes of the listed ones dilated by two (see rebuild).
+  integer, parameter :: LOAD_DILATION = 3
 
   type, public :: verlet_t
     logical :: by_segment = .true.            !< slave items are segments (mortar) or nodes (node-to-segment)
@@ -47,10 +52,23 @@ module raccord_contact_verlet
     integer, allocatable :: mdil(:)           !< master segments within two of a listed one, ascending
     integer :: nsnear = 0
     integer, allocatable :: snear(:)          !< slave segments with a near node, ascending
+    ! The surface nodes whose positions a step reads while the lists hold
+    ! (nodes of the near slave items and of the listed master segments,
+    ! each side dilated by LOAD_DILATION segments), and whether this step's
+    ! displacement check was made already (verlet_check).
+    integer :: nload = 0
+    integer, allocatable :: load(:)           !< global node numbers
+    logical :: checked = .false.
+    ! Node items: each node's closest master segment at the last step and
+    ! its foot parameters there (raccord_node_to_segment, smooth_foot).
+    integer, allocatable :: warm_seg(:)
+    real(wp), allocatable :: warm_t(:,:)      !< (3, slave nnode), -1: none
+    integer, allocatable :: sdist(:), mdist(:)   !< (nseg) scratch of load_list
+    logical, allocatable :: snode(:), mnode(:)   !< (nnode) scratch of load_list
     type(bins_t) :: bins
   end type verlet_t
 
-  public :: verlet_init, verlet_refresh, verlet_item_box, verlet_overlaps
+  public :: verlet_init, verlet_check, verlet_refresh, verlet_item_box, verlet_overlaps, verlet_candidates
 
 contains
 
@@ -70,7 +88,38 @@ contains
     allocate(v%mflag(master%nseg), source=.false.)
     allocate(v%box(4, master%nseg), source=0.0_wp)
     allocate(v%mdil(master%nseg), v%snear(slave%nseg))
+    allocate(v%load(slave%nnode + master%nnode))
+    allocate(v%sdist(slave%nseg), v%mdist(master%nseg))
+    allocate(v%snode(slave%nnode), v%mnode(master%nnode))
+    allocate(v%warm_seg(slave%nnode), source=0)
+    allocate(v%warm_t(3, slave%nnode), source=-1.0_wp)
   end subroutine verlet_init
+
+  !> The displacement check of verlet_refresh on x0 + u (reference
+  !> positions and displacements, the same sums the caller's positions are
+  !> made of), before the caller has formed them: afterwards, while
+  !> v%valid, the step reads only the nodes v%load(1:nload), and the
+  !> surface nodes far from the other surface cost this one pass. The
+  !> refresh that follows in the same step does not check again.
+  subroutine verlet_check(v, x0, u, slave, master)
+    type(verlet_t), intent(inout) :: v
+    real(wp), intent(in) :: x0(:,:), u(:,:)
+    type(contact_surface_t), intent(in) :: slave, master
+    integer :: q, n
+    real(wp) :: d2
+    v%checked = .true.
+    if (.not. v%valid) return
+    d2 = 0.0_wp
+    do q = 1, slave%nnode
+      n = slave%node(q)
+      d2 = max(d2, (x0(1, n) + u(1, n) - v%xs_ref(1, q))**2 + (x0(2, n) + u(2, n) - v%xs_ref(2, q))**2)
+    end do
+    do q = 1, master%nnode
+      n = master%node(q)
+      d2 = max(d2, (x0(1, n) + u(1, n) - v%xm_ref(1, q))**2 + (x0(2, n) + u(2, n) - v%xm_ref(2, q))**2)
+    end do
+    if (2.0_wp*sqrt(d2) > SKIN_SAFETY*v%skin) v%valid = .false.
+  end subroutine verlet_check
 
   !> Rebuild the lists if a surface node has moved by more than skin/2
   !> since the last build (or at the first call), then the current inflated
@@ -84,7 +133,7 @@ contains
     real(wp) :: d2, lo(2), hi(2), r
     v%rebuilt = .false.
     d2 = 0.0_wp
-    if (v%valid) then
+    if (v%valid .and. .not. v%checked) then
       do q = 1, slave%nnode
         d2 = max(d2, (x(1, slave%node(q)) - v%xs_ref(1, q))**2 + (x(2, slave%node(q)) - v%xs_ref(2, q))**2)
       end do
@@ -92,6 +141,7 @@ contains
         d2 = max(d2, (x(1, master%node(q)) - v%xm_ref(1, q))**2 + (x(2, master%node(q)) - v%xm_ref(2, q))**2)
       end do
     end if
+    v%checked = .false.
     if (.not. v%valid .or. 2.0_wp*sqrt(d2) > SKIN_SAFETY*v%skin) call rebuild(v, x, slave, master, reach)
     do t = 1, v%nmnear
       l = v%mnear(t)
@@ -135,6 +185,25 @@ contains
     real(wp), intent(in) :: lo(2), hi(2)
     yes = .not. (v%box(1, l) > hi(1) .or. v%box(3, l) < lo(1) .or. v%box(2, l) > hi(2) .or. v%box(4, l) < lo(2))
   end function verlet_overlaps
+
+  !> The listed master segments of slave item k whose current inflated box
+  !> meets [lo, hi] (verlet_overlaps on each, in list order, in one call:
+  !> the filter runs once per list entry and step).
+  pure subroutine verlet_candidates(v, k, lo, hi, cand, ncand)
+    type(verlet_t), intent(in) :: v
+    integer, intent(in) :: k
+    real(wp), intent(in) :: lo(2), hi(2)
+    integer, intent(inout) :: cand(:)
+    integer, intent(out) :: ncand
+    integer :: q, l
+    ncand = 0
+    do q = v%ptr(k), v%ptr(k + 1) - 1
+      l = v%item(q)
+      if (v%box(1, l) > hi(1) .or. v%box(3, l) < lo(1) .or. v%box(2, l) > hi(2) .or. v%box(4, l) < lo(2)) cycle
+      ncand = ncand + 1
+      cand(ncand) = l
+    end do
+  end subroutine verlet_candidates
 
   !> The full search on x with boxes inflated by reach + skin.
   subroutine rebuild(v, x, slave, master, reach)
@@ -214,6 +283,7 @@ contains
       v%nmnear = v%nmnear + 1
       v%mnear(v%nmnear) = l
     end do
+    call load_list(v, slave, master)
     if (v%by_segment) then
       v%mflag = .false.
       return
@@ -256,6 +326,75 @@ contains
       end do
     end do
   end subroutine rebuild
+
+  !> v%load: the nodes of the slave segments holding a near item and of
+  !> the listed master segments (v%mflag), each dilated by LOAD_DILATION
+  !> segments along its chain. v%mflag is left as it was.
+  subroutine load_list(v, slave, master)
+    type(verlet_t), intent(inout) :: v
+    type(contact_surface_t), intent(in) :: slave, master
+    integer :: t, k, c, stride
+    v%sdist(1:slave%nseg) = huge(1)
+    v%mdist(1:master%nseg) = huge(1)
+    stride = slave%nen_seg - 1
+    do t = 1, v%nnear
+      k = v%near(t)
+      if (v%by_segment) then
+        v%sdist(k) = 0
+      else
+        ! The segments at chain node c = k: the one it starts or lies in,
+        ! and the one a corner ends.
+        c = k
+        k = (c - 1)/stride + 1
+        if (k <= slave%nseg) v%sdist(k) = 0
+        if (mod(c - 1, stride) == 0) then
+          k = k - 1
+          if (k == 0 .and. slave%closed) k = slave%nseg
+          if (k >= 1) v%sdist(k) = 0
+        end if
+      end if
+    end do
+    do k = 1, master%nseg
+      if (v%mflag(k)) v%mdist(k) = 0
+    end do
+    v%nload = 0
+    call add_nodes(slave, v%sdist(1:slave%nseg), v%snode)
+    call add_nodes(master, v%mdist(1:master%nseg), v%mnode)
+  contains
+    !> Distances along the chain to the nearest flagged segment (twice
+    !> round a closed loop), then the nodes of those within LOAD_DILATION.
+    subroutine add_nodes(surf, dist, seen)
+      type(contact_surface_t), intent(in) :: surf
+      integer, intent(inout) :: dist(:)
+      logical, intent(inout) :: seen(:)
+      integer :: n, q, kk, a, i, prev, rounds
+      n = surf%nseg
+      rounds = merge(2, 1, surf%closed)
+      prev = huge(1)
+      do q = 1, rounds*n
+        kk = modulo(q - 1, n) + 1
+        if (prev < huge(1)) dist(kk) = min(dist(kk), prev + 1)
+        prev = dist(kk)
+      end do
+      prev = huge(1)
+      do q = rounds*n, 1, -1
+        kk = modulo(q - 1, n) + 1
+        if (prev < huge(1)) dist(kk) = min(dist(kk), prev + 1)
+        prev = dist(kk)
+      end do
+      seen(1:surf%nnode) = .false.
+      do kk = 1, n
+        if (dist(kk) > LOAD_DILATION) cycle
+        do a = 1, surf%nen_seg
+          i = chain_position(surf, kk, a)
+          if (seen(i)) cycle
+          seen(i) = .true.
+          v%nload = v%nload + 1
+          v%load(v%nload) = surf%node(i)
+        end do
+      end do
+    end subroutine add_nodes
+  end subroutine load_list
 
   !> Chain position (index in slave%node) of local node a of segment k.
   pure integer function chain_position(surf, k, a) result(pos)

@@ -31,7 +31,7 @@ module raccord_mortar
   use raccord_scene, only: MULT_P1, MULT_P0, MULT_DUAL
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
-  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
+  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
@@ -88,6 +88,7 @@ module raccord_mortar
     integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
     integer, allocatable :: mbeg(:), mend(:)  !< (nseg) each slave segment's master entries (empty: mbeg > mend)
     integer, allocatable :: stamp(:)          !< (nnode) last step a node's normal was taken at
+    integer, allocatable :: nlist(:)          !< (nnode) scratch: the nodes whose normals are taken
     integer :: nstep = 0
     integer, allocatable :: sstamp(:)         !< (nseg) last step snrm was taken at (2-node segments)
     real(wp), allocatable :: snrm(:,:)        !< (2, nseg) outward unit normal of each straight segment
@@ -139,6 +140,7 @@ contains
     allocate(w%covered(nn), source=.false.)
     allocate(w%mbeg(ns), source=1)
     allocate(w%mend(ns), w%stamp(nn), w%sstamp(ns), source=0)
+    allocate(w%nlist(nn))
     allocate(w%snrm(2, ns), source=0.0_wp)
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%cand(max(16, master%nseg)))
@@ -184,7 +186,7 @@ contains
     type(verlet_t), intent(inout) :: v
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, nen, ncand, q, l, t, tn
+    integer :: k, a, c, nen, ncand, l, t, tn
     real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), xi1, xi2
 
     w%multiplier = multiplier
@@ -223,13 +225,7 @@ contains
       end do
       ! Candidates: the listed master segments whose inflated box meets
       ! the slave segment's box now (the test of the full search).
-      ncand = 0
-      do q = v%ptr(k), v%ptr(k + 1) - 1
-        l = v%item(q)
-        if (.not. verlet_overlaps(v, l, lo, hi)) cycle
-        ncand = ncand + 1
-        w%cand(ncand) = l
-      end do
+      call verlet_candidates(v, k, lo, hi, w%cand, ncand)
       w%mbeg(k) = w%nment + 1
       do t = 1, ncand
         l = w%cand(t)
@@ -749,9 +745,16 @@ contains
       xibest = 0.0_wp
       nbest = 0.0_wp
       ! A corner within reach of a slave segment makes that segment near
-      ! (the master's end segment is in the slave segment's list).
+      ! (the master's end segment is in the slave segment's list): the
+      ! segments whose ascending list does not start (end) with segment
+      ! l = 1 (nseg) cannot hold the corner within reach, and are passed.
       do tn = 1, vl%nnear
         k = vl%near(tn)
+        if (t == 1) then
+          if (vl%item(vl%ptr(k)) /= l) cycle
+        else
+          if (vl%item(vl%ptr(k + 1) - 1) /= l) cycle
+        end if
         call load_segment(slave, x, k, xs)
         nn = 0.0_wp
         do a = 1, nen
@@ -794,9 +797,10 @@ contains
     real(wp), intent(in) :: x(:,:)
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, tn, t, kk
+    integer :: k, a, c, tn, t, kk, nl
     real(wp) :: xs(2, 3)
     w%nstep = w%nstep + 1
+    nl = 0
     do tn = 1, vl%nnear
       k = vl%near(tn)
       do a = 1, slave%nen_seg
@@ -829,8 +833,15 @@ contains
         if (slave%axisymmetric) then
           if (x(1, slave%node(c)) == 0.0_wp) w%nrm(1, c) = 0.0_wp
         end if
-        w%nrm(:, c) = w%nrm(:, c)/max(sqrt(w%nrm(1, c)**2 + w%nrm(2, c)**2), tiny(1.0_wp))
+        nl = nl + 1
+        w%nlist(nl) = c
       end do
+    end do
+    ! Normalised in a loop of its own: the square roots and divisions of
+    ! different nodes overlap there instead of waiting on each other.
+    do t = 1, nl
+      c = w%nlist(t)
+      w%nrm(:, c) = w%nrm(:, c)/max(sqrt(w%nrm(1, c)**2 + w%nrm(2, c)**2), tiny(1.0_wp))
     end do
   end subroutine slave_normals
 

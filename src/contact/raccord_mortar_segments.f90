@@ -103,8 +103,54 @@ contains
       end if
       return
     end if
+    if (nen == 2 .and. flo /= 0.0_wp .and. fhi /= 0.0_wp) then
+      xi = root_along_line(xs, nn, p, flo, fhi)
+      return
+    end if
     xi = bracketed_root(1, nen, xs, nn, p, [0.0_wp, 0.0_wp], flo, fhi)
   end function root_along_field
+
+  !> root_along_field on a straight 2-node segment, in closed form. With
+  !> x(xi) = xc + xi dx and n(xi) = nc + xi dn (linear shape functions),
+  !>   F(xi) = (p - x(xi)) x n(xi) = c + b xi + a xi^2,
+  !>   a = -(dx x dn),  b = (p - xc) x dn - dx x nc,  c = (p - xc) x nc,
+  !> and F(-1) = flo, F(+1) = fhi of opposite signs: the quadratic has
+  !> exactly one root in (-1, 1), taken with the cancellation-free pair
+  !> q = -(b + sign(b) sqrt(b^2 - 4ac))/2, roots q/a and c/q, and polished
+  !> by one Newton step (the bracketed Newton it replaces iterated the same
+  !> F to 4 eps; doc/theory-contact-mortar.md, "Segmentation").
+  pure real(wp) function root_along_line(xs, nn, p, flo, fhi) result(xi)
+    real(wp), intent(in) :: xs(2, 3), nn(2, 3), p(2), flo, fhi
+    real(wp) :: xc(2), dx(2), nc(2), dn(2), r(2), a, b, c, q, disc, r1, r2, f, fp
+    xc = 0.5_wp*(xs(:, 1) + xs(:, 2))
+    dx = 0.5_wp*(xs(:, 2) - xs(:, 1))
+    nc = 0.5_wp*(nn(:, 1) + nn(:, 2))
+    dn = 0.5_wp*(nn(:, 2) - nn(:, 1))
+    r = p - xc
+    a = -(dx(1)*dn(2) - dx(2)*dn(1))
+    b = (r(1)*dn(2) - r(2)*dn(1)) - (dx(1)*nc(2) - dx(2)*nc(1))
+    c = r(1)*nc(2) - r(2)*nc(1)
+    disc = max(b*b - 4.0_wp*a*c, 0.0_wp)
+    q = -0.5_wp*(b + sign(sqrt(disc), b))
+    if (q == 0.0_wp) then
+      ! b = 0 and a c >= 0 cannot bracket a root; the chord of the ends.
+      xi = -1.0_wp - 2.0_wp*flo/(fhi - flo)
+    else
+      r2 = c/q
+      if (a /= 0.0_wp) then
+        r1 = q/a
+        ! The root inside the bracket (the other lies outside it).
+        if (abs(r1) < abs(r2)) r2 = r1
+      end if
+      xi = r2
+    end if
+    xi = max(-1.0_wp, min(1.0_wp, xi))
+    ! One Newton step on F (restores the last bits where the quadratic's
+    ! coefficients cancel).
+    f = c + xi*(b + xi*a)
+    fp = b + 2.0_wp*xi*a
+    if (fp /= 0.0_wp) xi = max(-1.0_wp, min(1.0_wp, xi - f/fp))
+  end function root_along_line
 
   !> Master parameter eta in [-1, 1] where the line q + alpha n meets the
   !> master segment xm: root of G(eta) = (x_m(eta) - q) x n, clipped to the

@@ -25,7 +25,7 @@ module raccord_node_to_segment
   use raccord_kinds, only: wp, pi
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
-  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_overlaps
+  use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
   use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
   use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
   use raccord_mortar_segments, only: outward_normal, normal_field, project_along_field, cross2, NODE_XI
@@ -48,16 +48,17 @@ contains
   !> Candidates come from the lists of raccord_contact_verlet; only the
   !> slave nodes with candidates, and the master segments near them, are
   !> visited (the pairs are those of the full search, in the same order).
-  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, v, trib, nodal_normal, cs)
+  subroutine build_node_to_segment(slave, master, x, xpred, du, reach, v, trib, nodal_normal, cand, cs)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
     real(wp), intent(in) :: reach
     type(verlet_t), intent(inout) :: v
     real(wp), intent(inout) :: trib(:)           !< (slave%nnode) scratch: tributary lengths
     real(wp), intent(inout) :: nodal_normal(:,:) !< (2, nnode) scratch: master nodal normals
+    integer, intent(inout) :: cand(:)            !< (master%nseg) scratch: a node's candidates
     type(constraint_set_t), intent(inout) :: cs
-    integer :: i, p, q, k, best, nen, a, tn
-    real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, best_t(2), n_m(2), g, sh(3), dsh(3)
+    integer :: i, p, q, k, best, nen, a, tn, ncand
+    real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, n_m(2), g, sh(3), dsh(3)
     real(wp) :: nn(2, 3), dnf(2), sw(4)
     integer :: k2, sn(4), t0, gap, tt
     logical :: fold
@@ -98,11 +99,13 @@ contains
       xp = x(:, p)
       best = 0
       best_dist = huge(1.0_wp)
-      do q = v%ptr(i), v%ptr(i + 1) - 1
-        k = v%item(q)
-        if (.not. verlet_overlaps(v, k, xp, xp)) cycle
+      call verlet_candidates(v, i, xp, xp, cand, ncand)
+      do q = 1, ncand
+        k = cand(q)
         call load_segment(master, x, k, xs)
-        call project_on_segment(nen, xs, xp, s, foot, tang)
+        ! (The closest segment's tangent is not needed: the normal comes
+        ! from smooth_foot or field_foot below.)
+        call project_on_segment(nen, xs, xp, s, foot)
         ! A foot beyond the segment's end belongs to the neighbour, or, at
         ! the end of the master chain, to nobody: the node has slid off.
         beyond = abs(s) > 1.0_wp + eps
@@ -113,20 +116,21 @@ contains
           ! vertex as the closest point; the neighbour gives the normal too.
           s = max(-1.0_wp, min(1.0_wp, s))
           call segment_point(nen, xs, s, foot, tang)
-          tang = tang/sqrt(tang(1)**2 + tang(2)**2)
         end if
         dist = sqrt((xp(1) - foot(1))**2 + (xp(2) - foot(2))**2)
         if (dist < best_dist) then
           best_dist = dist
           best = k
           best_s = s
-          best_t = tang
         end if
       end do
       if (best == 0) cycle near_nodes
       if (nen == 2) then
         ! Straight segments: the foot on the smoothed master (see smooth_foot).
-        call smooth_foot(master, x, best, xp, sn, sw, n_m)
+        ! Warm start: the node's feet of the last step on the same spans.
+        if (v%warm_seg(i) /= best) v%warm_t(:, i) = -1.0_wp
+        v%warm_seg(i) = best
+        call smooth_foot(master, x, best, xp, sn, sw, n_m, v%warm_t(:, i))
         g = dot_product(xpred(:, p) - (sw(1)*xpred(:, sn(1)) + sw(2)*xpred(:, sn(2)) + sw(3)*xpred(:, sn(3)) + &
           sw(4)*xpred(:, sn(4))), n_m)
         if (g > reach .or. g < -reach) cycle near_nodes
@@ -219,13 +223,18 @@ contains
   !> non-matching meshes with the fine side as slave. Returns the four nodes,
   !> their weights (0 for an unused one) and the outward unit normal, on
   !> the positions x (t(n)).
-  subroutine smooth_foot(master, x, k, xp, nodes, w, normal)
+  !> With `warm` (the span parameters of the last step's call on the same
+  !> k, -1 for none) each span's Newton starts there instead of at the
+  !> chord projection, and warm returns this call's: the root is the same,
+  !> reached in one or two iterations (doc/theory-contact.md, section 4).
+  subroutine smooth_foot(master, x, k, xp, nodes, w, normal, warm)
     type(contact_surface_t), intent(in) :: master
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: k
     real(wp), intent(in) :: xp(2)
     integer, intent(out) :: nodes(4)
     real(wp), intent(out) :: w(4), normal(2)
+    real(wp), intent(inout), optional :: warm(3)
     integer :: kk, c, nd(4)
     real(wp) :: d, best_d, wt(4), tg(2)
     best_d = huge(1.0_wp)
@@ -238,7 +247,11 @@ contains
       nd = [neighbour_segment(master, kk, -1), master%seg(1, kk), master%seg(2, kk), neighbour_segment(master, kk, 1)]
       if (nd(1) > 0) nd(1) = master%seg(1, nd(1))
       if (nd(4) > 0) nd(4) = master%seg(2, nd(4))
-      call span_closest(x, nd, xp, d, wt, tg)
+      if (present(warm)) then
+        call span_closest(x, nd, xp, d, wt, tg, warm(c + 2))
+      else
+        call span_closest(x, nd, xp, d, wt, tg)
+      end if
       if (d < best_d) then
         best_d = d
         nodes = nd
@@ -266,11 +279,12 @@ contains
   !> (P or N 0 when missing: reflected about A or B), by safeguarded Newton
   !> on (C(t) - xp) . C'(t) = 0 over t in [0, 1]: its distance d, the
   !> node weights w and the tangent t there.
-  subroutine span_closest(x, nd, xp, d, w, tg)
+  subroutine span_closest(x, nd, xp, d, w, tg, warm)
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: nd(4)
     real(wp), intent(in) :: xp(2)
     real(wp), intent(out) :: d, w(4), tg(2)
+    real(wp), intent(inout), optional :: warm   !< start parameter (none if outside [0, 1]); returns the foot's
     real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), d2w(4), phi, turn
     integer :: it
     xa = x(:, nd(2))
@@ -304,6 +318,9 @@ contains
     ! Start from the projection on the chord.
     t = dot_product(xp - xa, xb - xa)/max(len*len, tiny(1.0_wp))
     t = max(0.0_wp, min(1.0_wp, t))
+    if (present(warm)) then
+      if (warm >= 0.0_wp .and. warm <= 1.0_wp) t = warm
+    end if
     dbest = huge(1.0_wp)
     tbest = t
     ! Distances compared squared in the iteration (norm2 is a scaled loop
@@ -324,11 +341,16 @@ contains
       if (abs(tn - t) <= 1.0e-14_wp) exit
       t = tn
     end do
-    t = tbest
-    call weights(t)
-    c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
+    ! w, dw, c and tg are still those of tbest when the iteration stopped
+    ! at it (the usual case): not evaluated again.
+    if (it > 30 .or. t /= tbest) then
+      t = tbest
+      call weights(t)
+      c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
+      tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
+    end if
+    if (present(warm)) warm = t
     d = norm2(c)
-    tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
     ! A reflected node moves its weight to its neighbours (2 w to the end, -w to the other).
     if (nd(1) == 0) then
       w(2) = w(2) + 2.0_wp*w(1)

@@ -40,14 +40,15 @@ contains
 
   !> Closest point of the segment's curve to p: parameter s (not clamped:
   !> |s| > 1 means the foot lies beyond an end), the foot x and the unit
-  !> tangent there. Straight segments project in closed form; quadratic ones
+  !> tangent there (when asked for). Straight segments project in closed form; quadratic ones
   !> by Newton on (x(s) - p) . x'(s) = 0 from the straight-chord guess,
   !> safeguarded: a step that does not reduce the distance is halved, and
   !> after 30 iterations the best point seen is kept.
   pure subroutine project_on_segment(nen, xs, p, s, foot, tangent)
     integer, intent(in) :: nen
     real(wp), intent(in) :: xs(2, 3), p(2)
-    real(wp), intent(out) :: s, foot(2), tangent(2)
+    real(wp), intent(out) :: s, foot(2)
+    real(wp), intent(out), optional :: tangent(2)
     real(wp) :: chord(2), dx(2), d2x(2), f, fp, ds, snew, dist, dnew, xn(2), dxn(2)
     integer :: it, half
     chord = xs(:, 2) - xs(:, 1)
@@ -77,7 +78,7 @@ contains
       end do
     end if
     call segment_point(nen, xs, s, foot, dx)
-    tangent = dx/max(sqrt(dx(1)**2 + dx(2)**2), tiny(1.0_wp))
+    if (present(tangent)) tangent = dx/max(sqrt(dx(1)**2 + dx(2)**2), tiny(1.0_wp))
   end subroutine project_on_segment
 
   !> v turned by +90 degrees.
