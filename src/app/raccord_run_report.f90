@@ -195,6 +195,7 @@ contains
     case default
       s = 'mortar matching, multiplier space ' // str(pair%multiplier)
     end select
+    if (pair%weighted) s = s // ', rows along the master''s normal, conditions on each weighted gap'
   end function matching_text
 
   !> ' (Q4 mean_dilatation)' and the like for a finite-strain or j2 body's blocks.

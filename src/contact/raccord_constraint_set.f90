@@ -29,6 +29,10 @@ module raccord_constraint_set
     real(wp), allocatable :: normal(:,:)      !< (2, m) slave -> master
     real(wp), allocatable :: tangent(:,:)     !< (2, m) normal turned clockwise
     integer :: g1_band = 0                    !< half bandwidth of G1 this step
+    !> The contact conditions bear on each multiplier and its own weighted
+    !> gap (lambda_j >= 0, g_w(j) >= 0; mortar) instead of on G1 lambda and
+    !> the nodal gap (paper (19)); G1 stays the map to the nodal forces.
+    logical :: weighted = .false.
     real(wp), allocatable :: g1(:,:)          !< (-G1_MAX_BAND:G1_MAX_BAND, m): g1(d, j) = G1(j+d, j)
     integer, allocatable :: row_ptr(:)        !< (m+1) start of each row's entries
     integer :: nent = 0
@@ -56,6 +60,7 @@ contains
     cs%m = 0
     cs%nent = 0
     cs%g1_band = 0
+    cs%weighted = .false.
     cs%row_ptr(1) = 1
   end subroutine cs_start
 

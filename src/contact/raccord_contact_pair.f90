@@ -31,6 +31,7 @@ module raccord_contact_pair
     character(len=:), allocatable :: name          !< slave/master, for logs and outputs
     integer :: method = METHOD_NTS
     integer :: multiplier = 1
+    logical :: weighted = .false.                  !< mortar: conditions on each weighted gap
     real(wp) :: mu = 0.0_wp
     real(wp) :: reach = 0.0_wp                     !< search distance
     integer :: max_iter = 50
@@ -131,6 +132,8 @@ contains
         pair%name = trim(spec%slave) // '/' // trim(spec%master)
         pair%method = spec%method
         pair%multiplier = spec%multiplier
+        pair%weighted = spec%weighted
+        pair%mortar%weighted = spec%weighted
         pair%mu = spec%friction
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance
@@ -353,6 +356,9 @@ contains
       pair%status(i) = pair%st_c(j)
       pair%sigma(i) = pair%sg_c(j)
       pair%gap(i) = pair%work%gn(j)
+      ! conditions = 'weighted': gn is the weighted gap; over the length
+      ! the row carries, a mean gap
+      if (pair%cs%weighted .and. pair%cs%length(j) > lmin) pair%gap(i) = pair%gap(i)/pair%cs%length(j)
       pair%lam_n(i) = pair%work%lam(j)
       pair%lam_t(i) = pair%work%tau(j)
       pair%slip(i) = pair%work%gt(j)

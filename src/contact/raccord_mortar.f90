@@ -68,12 +68,17 @@ module raccord_mortar
   !> grow only (no allocation per step once the contact zone is known).
   type, public :: mortar_work_t
     integer :: multiplier = MULT_P1
+    !> conditions = 'weighted': rows along the master's normal (row_normal)
+    !> and each multiplier against its own weighted gap (cs%weighted);
+    !> otherwise the paper's rows along the slave's nodal normal and (19)
+    logical :: weighted = .false.
     integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
     integer, allocatable :: nadj(:)           !< (nnode) segments a chain node belongs to (1 or 2)
     integer, allocatable :: adj_seg(:,:)      !< (2, nnode) those segments
     integer, allocatable :: adj_loc(:,:)      !< (2, nnode) the node's local index there
     real(wp), allocatable :: nrm(:,:)         !< (2, nnode) slave nodal normals (outward)
     real(wp), allocatable :: g1loc(:,:,:)     !< (3, 3, nseg) G1 contributions: (phi local i, psi local j)
+    real(wp), allocatable :: nmloc(:,:,:)     !< (2, 3, nseg) integral of psi_j times the master's inward normal
     real(wp), allocatable :: len(:)           !< (nnode) integral of psi_j over the overlap
     real(wp), allocatable :: trib(:)          !< (nnode) integral of phi_j over the overlap (sum_k G1(j, k))
     logical, allocatable :: covered(:)        !< (nnode) the node itself faces the master this step
@@ -137,6 +142,7 @@ contains
     allocate(w%nadj(nn), w%adj_seg(2, nn), w%adj_loc(2, nn), w%cidx(nn), source=0)
     allocate(w%nrm(2, nn), w%len(nn), w%trib(nn), source=0.0_wp)
     allocate(w%g1loc(3, 3, ns), source=0.0_wp)
+    allocate(w%nmloc(2, 3, ns), source=0.0_wp)
     allocate(w%covered(nn), source=.false.)
     allocate(w%mbeg(ns), source=1)
     allocate(w%mend(ns), w%stamp(nn), w%sstamp(ns), source=0)
@@ -195,6 +201,7 @@ contains
     if (v%rebuilt) then
       ! The near segments change: clear what the others keep between steps.
       w%g1loc = 0.0_wp
+      w%nmloc = 0.0_wp
       w%covered = .false.
       w%len = 0.0_wp
       w%trib = 0.0_wp
@@ -217,6 +224,7 @@ contains
         nn(:, a) = w%nrm(:, w%pos(a, k))
       end do
       w%g1loc(:, :, k) = 0.0_wp
+      w%nmloc(:, :, k) = 0.0_wp
       lo = xs(:, 1)
       hi = xs(:, 1)
       do a = 2, nen
@@ -314,6 +322,7 @@ contains
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
     call cs_start(cs, slave%nnode + 2)
+    cs%weighted = w%weighted
     if (vl%nnear == 0) return
     fold = .false.
     if (slave%closed) then
@@ -365,7 +374,11 @@ contains
       c = at(q)
       j = w%cidx(c)
       if (j > 0) then
-        call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
+        if (w%weighted) then
+          call cs_add_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c))
+        else
+          call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
+        end if
         cs%g1(:, j) = 0.0_wp
         do t = 1, w%nadj(c)
           k = w%adj_seg(t, c)
@@ -405,6 +418,37 @@ contains
       at = cfirst + kk - 1
       if (slave%closed) at = modulo(at - 1, slave%nnode) + 1
     end function at
+
+    !> The row's normal: the psi_c-weighted mean of the master's inward
+    !> normal over the overlap, int psi_c nu dGamma normalised. At zero gap
+    !> this is the direction of the gradient of the weighted gap
+    !> int psi_c (x_m - x_s) . nu dGamma with respect to the nodal
+    !> positions (moving the projection point along the master, or turning
+    !> nu, changes it only at second order), so the row is the first
+    !> variation of the weighted gap and the frictionless contact force has
+    !> no part along the master that could work on the sliding. The slave's
+    !> nodal normal n_c, used before, is not the master's normal on a
+    !> curved slave: its rows let the slave nodes zigzag about a flat
+    !> master at zero weighted gap and gave energy (doc/theory-contact.md,
+    !> section 7). Exact on a straight master; on a curved one the mean
+    !> over the support (the direction varies by the master's turn over
+    !> one slave segment). Falls back to n_c where the overlap has no
+    !> weight (round-off).
+    function row_normal(cc) result(nr)
+      integer, intent(in) :: cc
+      real(wp) :: nr(2), s
+      integer :: tt
+      nr = 0.0_wp
+      do tt = 1, w%nadj(cc)
+        nr = nr + w%nmloc(:, w%adj_loc(tt, cc), w%adj_seg(tt, cc))
+      end do
+      s = sqrt(nr(1)**2 + nr(2)**2)
+      if (s > 0.0_wp) then
+        nr = nr/s
+      else
+        nr = w%nrm(:, cc)
+      end if
+    end function row_normal
 
     !> Integral of psi_c over the whole of its slave segments, the weight
     !> its multiplier has where its support faces the master: 1/2 of a
@@ -465,7 +509,7 @@ contains
     type(mortar_work_t), intent(inout) :: w
     integer :: nen, nenm, nb, ib, g, a, b, cm
     real(wp) :: xm(2, 3), s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
-      pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3)
+      pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3), nu(2)
 
     nen = slave%nen_seg
     nenm = master%nen_seg
@@ -528,12 +572,18 @@ contains
         if (slave%axisymmetric) dg = dg*(2.0_wp*pi*ps(1))
         eta = intersect_ray(nenm, xm, ps, n)
         call shape_line(nenm, eta, nm, dnm)
+        ! The master's inward unit normal at eta (its tangent turned
+        ! anticlockwise): the direction of the gap's gradient there.
+        tm = xm(:, 1)*dnm(1) + xm(:, 2)*dnm(2)
+        if (nenm == 3) tm = tm + xm(:, 3)*dnm(3)
+        nu = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
         call multiplier_basis(nen, w%multiplier, xi, psi)
         do b = 1, nen
           if (psi(b) == 0.0_wp) cycle
           ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
           w%g1loc(1:nen, b, k) = w%g1loc(1:nen, b, k) + ns(1:nen)*psi(b)*dg
           mloc(1:nenm, b) = mloc(1:nenm, b) + nm(1:nenm)*psi(b)*dg
+          w%nmloc(:, b, k) = w%nmloc(:, b, k) + nu*psi(b)*dg
         end do
       end do
     end do pieces
@@ -565,7 +615,7 @@ contains
     type(mortar_work_t), intent(inout) :: w
     integer :: a, b, g, ib, np
     real(wp) :: xm1(2), xm2(2), ts(2), tm(2), xi, wgt, ps(2), n(2), eta, pm(2), dg, ns(2), nm(2), psi(2), &
-      mloc(2, 2), bounds(3), lo, hi, dgw
+      mloc(2, 2), bounds(3), lo, hi, dgw, nu(2)
     logical :: p0
 
     xm1 = x(:, master%seg(1, l))
@@ -599,6 +649,8 @@ contains
     bounds(np + 1) = s1
     ! dGamma = |dx_s/dxi| dxi, |dx_s/dxi| constant on a straight segment.
     dg = sqrt(ts(1)**2 + ts(2)**2)
+    ! The master's inward unit normal (its tangent turned anticlockwise).
+    nu = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
     mloc = 0.0_wp
     pieces: do ib = 1, np
       lo = bounds(ib)
@@ -627,6 +679,7 @@ contains
           ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
           w%g1loc(1:2, b, k) = w%g1loc(1:2, b, k) + ns*psi(b)*dgw
           mloc(:, b) = mloc(:, b) + nm*psi(b)*dgw
+          w%nmloc(:, b, k) = w%nmloc(:, b, k) + nu*psi(b)*dgw
         end do
       end do
     end do pieces
@@ -706,6 +759,8 @@ contains
         if (target == 0) cycle
         w%g1loc(1:nen, target, k) = w%g1loc(1:nen, target, k) + w%g1loc(1:nen, b, k)
         w%g1loc(1:nen, b, k) = 0.0_wp
+        w%nmloc(:, target, k) = w%nmloc(:, target, k) + w%nmloc(:, b, k)
+        w%nmloc(:, b, k) = 0.0_wp
         do e = w%mbeg(k), w%mend(k)
           if (w%ment_loc(e) == b) w%ment_loc(e) = target
         end do

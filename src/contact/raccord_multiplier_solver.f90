@@ -27,6 +27,12 @@
 !> longer change; the solution then satisfies (19) exactly.
 !> Cost per iteration is linear in the number of constraints. mu = 0 drops
 !> the tangential unknowns altogether.
+!> With cs%weighted (mortar) the same conditions bear on each multiplier
+!> and its own weighted gap and slip, i.e. G1 is replaced by the identity
+!> in the conditions (lambda_j >= 0, g_w(j) >= 0, lambda_j g_w(j) = 0,
+!> |tau_j| <= mu lambda_j, ...): the nodal gap G1^-T g_w mixes the open
+!> neighbours' gaps into a closed node's, and with rows frozen per step
+!> that gave the bodies energy (doc/theory-contact.md, section 7).
 !> Degrees of freedom with prescribed motion have M^-1 = 0: infinitely
 !> massive, they take no correction.
 module raccord_multiplier_solver
@@ -111,7 +117,7 @@ contains
     if (.not. friction) where (w%status(1:m) == ST_SLIP) w%status(1:m) = ST_STICK
     do j = 1, m
       if (w%knn(0, j) > 0.0_wp) then
-        w%c(j) = cs%g1(0, j)**2/(dt*dt*w%knn(0, j))
+        w%c(j) = g1c(cs, j, j)**2/(dt*dt*w%knn(0, j))
       else
         w%c(j) = 0.0_wp
         w%dropped = w%dropped + 1
@@ -126,8 +132,10 @@ contains
     call ensure_i(w%lcol, nu*m)
     call ensure_i(w%ext, 2*nu*m)
 
-    if (.not. friction) then
-      ! The Delassus form (below) first; the saddle form if it declines.
+    ! The Delassus forms (below) first, the saddle form if they decline.
+    ! They are written for the paper's conditions (19); weighted conditions
+    ! (cs%weighted: G1 the identity in the conditions) take the saddle form.
+    if (.not. friction .and. .not. cs%weighted) then
       call solve_frictionless(cs, dt, max_iter, w, same, info)
       if (info == 0) then
         if (.not. same) w%converged = .false.
@@ -139,7 +147,7 @@ contains
       w%status(1:m) = status(1:m)
       where (w%status(1:m) == ST_SLIP) w%status(1:m) = ST_STICK
       w%iterations = 0
-    else if (cs%g1_band == 0) then
+    else if (friction .and. cs%g1_band == 0 .and. .not. cs%weighted) then
       call solve_diagonal_friction(cs, dt, mu, max_iter, w, same, info)
       if (info == 0) then
         if (.not. same) w%converged = .false.
@@ -600,18 +608,19 @@ contains
     logical, intent(in) :: friction
     type(solver_work_t), intent(inout) :: w
     integer :: j
-    real(wp) :: z
+    real(wp) :: z, fc, tc, gtol
     do j = 1, m
       if (w%c(j) <= 0.0_wp) then
         w%status(j) = ST_OPEN
         cycle
       end if
-      if (w%fn(j) - w%c(j)*w%gn(j) > w%c(j)*GAP_ROUNDOFF*cs%length(j)) then
+      call condition_forces(cs, w, j, fc, tc, gtol)
+      if (fc - w%c(j)*w%gn(j) > w%c(j)*GAP_ROUNDOFF*gtol) then
         if (.not. friction) then
           w%status(j) = ST_STICK
         else
-          z = w%ft(j) - w%c(j)*w%gt(j)
-          if (abs(z) <= mu*max(w%fn(j), 0.0_wp)) then
+          z = tc - w%c(j)*w%gt(j)
+          if (abs(z) <= mu*max(fc, 0.0_wp)) then
             w%status(j) = ST_STICK
           else
             w%status(j) = ST_SLIP
@@ -624,6 +633,25 @@ contains
     end do
   end subroutine update_sets
 
+  !> The normal and tangential force the conditions bear on (G1 lambda,
+  !> G1 tau; lambda, tau when cs%weighted) and the gap's round-off scale
+  !> (the constraint's length; times G1_jj for a weighted gap).
+  subroutine condition_forces(cs, w, j, fc, tc, gtol)
+    type(constraint_set_t), intent(in) :: cs
+    type(solver_work_t), intent(in) :: w
+    integer, intent(in) :: j
+    real(wp), intent(out) :: fc, tc, gtol
+    if (cs%weighted) then
+      fc = w%lam(j)
+      tc = w%tau(j)
+      gtol = cs%length(j)*abs(cs%g1(0, j))
+    else
+      fc = w%fn(j)
+      tc = w%ft(j)
+      gtol = cs%length(j)
+    end if
+  end subroutine condition_forces
+
   !> Largest violation of (19) by the final iterate, relative: gaps to the
   !> shortest nonzero constraint length, forces to the largest normal force.
   real(wp) function condition_residual(cs, mu, friction, w) result(r)
@@ -632,20 +660,29 @@ contains
     logical, intent(in) :: friction
     type(solver_work_t), intent(in) :: w
     integer :: j, m
-    real(wp) :: fscale, lscale
+    real(wp) :: fscale, lscale, fc, tc, gtol, g
     m = cs%m
-    fscale = max(maxval(abs(w%fn(1:m))), tiny(1.0_wp))
+    fscale = 0.0_wp
+    do j = 1, m
+      call condition_forces(cs, w, j, fc, tc, gtol)
+      fscale = max(fscale, abs(fc))
+    end do
+    fscale = max(fscale, tiny(1.0_wp))
     ! the shortest length a multiplier acts on; a row of zero length (an
     ! axisymmetric node on the axis: 2 pi r = 0) would make any gap huge
     lscale = minval(cs%length(1:m), mask=cs%length(1:m) > 0.0_wp)
     if (.not. (lscale > 0.0_wp .and. lscale < huge(1.0_wp))) lscale = 1.0_wp
     r = 0.0_wp
     do j = 1, m
+      call condition_forces(cs, w, j, fc, tc, gtol)
+      ! a weighted gap is a gap times a length: over the row's own length
+      g = w%gn(j)
+      if (cs%weighted .and. cs%length(j) > 0.0_wp) g = g/cs%length(j)
       if (w%status(j) == ST_OPEN) then
-        if (w%c(j) > 0.0_wp) r = max(r, -w%gn(j)/lscale, abs(w%fn(j))/fscale)
+        if (w%c(j) > 0.0_wp) r = max(r, -g/lscale, abs(fc)/fscale)
       else
-        r = max(r, abs(w%gn(j))/lscale, -w%fn(j)/fscale)
-        if (friction) r = max(r, (abs(w%ft(j)) - mu*w%fn(j))/fscale)
+        r = max(r, abs(g)/lscale, -fc/fscale)
+        if (friction) r = max(r, (abs(tc) - mu*fc)/fscale)
       end if
     end do
     r = max(r, 0.0_wp)
@@ -675,6 +712,18 @@ contains
     g1_at = 0.0_wp
     if (abs(j - k) <= cs%g1_band) g1_at = cs%g1(j - k, k)
   end function g1_at
+
+  !> The G1 of the conditions: G1(j, k), or the identity when the
+  !> conditions bear on each multiplier and its weighted gap (cs%weighted).
+  pure real(wp) function g1c(cs, j, k)
+    type(constraint_set_t), intent(in) :: cs
+    integer, intent(in) :: j, k
+    if (cs%weighted) then
+      g1c = merge(1.0_wp, 0.0_wp, j == k)
+    else
+      g1c = g1_at(cs, j, k)
+    end if
+  end function g1c
 
   !> Unknowns for the current sets, constraint by constraint in chain
   !> order: lambda_j, gn_j unless j is in contact (gn_j = 0, with
@@ -750,7 +799,7 @@ contains
       ! on Q8 edges or where the contact zone ends inside a P0 dual cell.
       r = w%var(1, j)
       do k = max(1, j - bw), min(m, j + bw)
-        if (w%var(2, k) > 0) call put(r, w%var(2, k), g1_at(cs, k, j))
+        if (w%var(2, k) > 0) call put(r, w%var(2, k), g1c(cs, k, j))
         if (abs(j - k) <= w%kb) then
           call put(r, w%var(1, k), -dt2*w%knn(k - j, j))
           if (friction) call put(r, w%var(3, k), -dt2*w%knt(k - j, j))
@@ -766,7 +815,7 @@ contains
           call put(r, r, 1.0_wp)
         else
           do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
-            call put(r, w%var(1, k), g1_at(cs, j, k))
+            call put(r, w%var(1, k), g1c(cs, j, k))
           end do
         end if
       end if
@@ -774,7 +823,7 @@ contains
       ! Slip definition: G1' gt - dt^2 (Ktn lambda + Ktt tau) = s_w*.
       r = w%var(3, j)
       do k = max(1, j - bw), min(m, j + bw)
-        if (w%var(4, k) > 0) call put(r, w%var(4, k), g1_at(cs, k, j))
+        if (w%var(4, k) > 0) call put(r, w%var(4, k), g1c(cs, k, j))
         if (abs(j - k) <= w%kb) then
           call put(r, w%var(1, k), -dt2*w%ktn(k - j, j))
           call put(r, w%var(3, k), -dt2*w%ktt(k - j, j))
@@ -788,12 +837,12 @@ contains
       w%rhs(r) = 0.0_wp
       if (w%status(j) == ST_SLIP) then
         do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
-          call put(r, w%var(3, k), g1_at(cs, j, k))
-          call put(r, w%var(1, k), -mu*w%sigma(j)*g1_at(cs, j, k))
+          call put(r, w%var(3, k), g1c(cs, j, k))
+          call put(r, w%var(1, k), -mu*w%sigma(j)*g1c(cs, j, k))
         end do
       else
         do k = max(1, j - cs%g1_band), min(m, j + cs%g1_band)
-          call put(r, w%var(3, k), g1_at(cs, j, k))
+          call put(r, w%var(3, k), g1c(cs, j, k))
         end do
       end if
     end do

@@ -48,7 +48,7 @@ module raccord_deck
     'pressure', 'amplitude']
   character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
   character(len=*), parameter :: CONTACT_KEYS(*) = [character(len=16) :: 'slave', 'master', 'method', &
-    'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations']
+    'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations', 'conditions']
 
 
 contains
@@ -651,16 +651,18 @@ contains
 
 
 
-  !> &contact_pair slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations.
+  !> &contact_pair slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations,
+  !> conditions.
   subroutine read_contact(deck, blk, spec, err)
     character(len=*), intent(in) :: deck
     type(deck_block_t), intent(in) :: blk
     type(contact_spec_t), intent(out) :: spec
     type(error_t), intent(inout) :: err
-    character(len=name_len) :: slave, master, method, multiplier
+    character(len=name_len) :: slave, master, method, multiplier, conditions
     real(wp) :: friction, search_distance, tolerance
     integer :: max_iterations
-    namelist /contact_pair/ slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations
+    namelist /contact_pair/ slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations, &
+      conditions
     character(len=:), allocatable :: record, label
     character(len=256) :: msg
     integer :: k, ios
@@ -669,6 +671,7 @@ contains
     master = ''
     method = 'node_to_segment'
     multiplier = 'P1'
+    conditions = 'nodal'
     friction = spec%friction
     search_distance = spec%search_distance
     tolerance = spec%tolerance
@@ -740,6 +743,17 @@ contains
     case default
       call bad_value(deck, blk, label, 'multiplier', 'unknown multiplier space', &
         'use ''P1'', ''P0'' or ''dual''', err)
+      return
+    end select
+    select case (lower(conditions))
+    case ('nodal')
+      spec%weighted = .false.
+    case ('weighted')
+      spec%weighted = .true.
+    case default
+      call bad_value(deck, blk, label, 'conditions', 'unknown contact conditions', &
+        'use ''nodal'' (the paper''s (19), the default) or ''weighted'' (each multiplier against its ' // &
+        'own weighted gap; doc/scene-reference.md)', err)
       return
     end select
     spec%slave = trim(slave)

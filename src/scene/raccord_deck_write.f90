@@ -178,6 +178,7 @@ contains
           case default
             call put_text(unit, 'multiplier', 'unknown_' // str(p%multiplier), ios, msg)
           end select
+          call put_text(unit, 'conditions', trim(merge('weighted', 'nodal   ', p%weighted)), ios, msg)
           call put(unit, '  friction = ' // real_text(p%friction), ios, msg)
           call put(unit, '  search_distance = ' // real_text(p%search_distance), ios, msg)
           call put(unit, '  tolerance = ' // real_text(p%tolerance), ios, msg)

@@ -113,6 +113,10 @@ module raccord_scene
     character(len=:), allocatable :: slave, master  !< surface names
     integer :: method = METHOD_NTS
     integer :: multiplier = MULT_P1                 !< mortar multiplier space
+    !> mortar: the conditions bear on each multiplier and its own weighted
+    !> gap (conditions = 'weighted') instead of the paper's (19) on G1 lambda
+    !> and the nodal gap (conditions = 'nodal', the default)
+    logical :: weighted = .false.
     real(wp) :: friction = 0.0_wp                   !< Coulomb coefficient mu; 0 = frictionless
     real(wp) :: search_distance = 0.0_wp            !< 0 = automatic (from the surface element sizes)
     real(wp) :: tolerance = 1.0e-10_wp              !< relative residual of the multiplier solve

@@ -96,6 +96,7 @@ program test_scene_deck
       new_test('bad: slave equals master', bad_slave_equals_master), &
       new_test('bad: method unknown', bad_method_unknown), &
       new_test('bad: multiplier unknown', bad_multiplier_unknown), &
+      new_test('bad: contact conditions unknown', bad_conditions_unknown), &
       new_test('bad: friction negative', bad_friction_negative), &
       new_test('bad: tolerance nonpositive', bad_tolerance_nonpositive), &
       new_test('bad: max iterations zero', bad_max_iterations_zero), &
@@ -272,6 +273,7 @@ contains
         call check_text(failure, q%slave, p%slave, 'contact slave')
         call check_text(failure, q%master, p%master, 'contact master')
         call check(failure, q%method == p%method .and. q%multiplier == p%multiplier .and. &
+          (q%weighted .eqv. p%weighted) .and. &
           q%friction == p%friction .and. q%search_distance == p%search_distance .and. &
           q%tolerance == p%tolerance .and. q%max_iterations == p%max_iterations, &
           'contact pair ' // p%slave // ' differs')
@@ -399,6 +401,8 @@ contains
     call check_close(failure, s%contacts(1)%search_distance, 0.5_wp, 'contact 1 search_distance')
     call check_close(failure, s%contacts(1)%tolerance, 1.0e-8_wp, 'contact 1 tolerance')
     call check(failure, s%contacts(1)%max_iterations == 50, 'contact 1 max_iterations')
+    call check(failure, s%contacts(1)%weighted, 'contact 1 conditions')
+    call check(failure, .not. s%contacts(2)%weighted, 'contact 2 conditions default')
     call check_text(failure, s%contacts(2)%slave, 'disc_side', 'contact 2 slave')
     call check(failure, s%contacts(2)%method == METHOD_NTS .and. s%contacts(2)%multiplier == MULT_P1, &
       'contact 2 method and multiplier defaults')
@@ -1230,6 +1234,16 @@ contains
       "&contact_pair slave = 's', master = 'm', multiplier = 'P2' /", &
       4, [character(len=FRAG_LEN) :: "&contact_pair 's/m'", "'multiplier'", "'P2'", "'dual'"])
   end subroutine bad_multiplier_unknown
+
+  subroutine bad_conditions_unknown(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'conditions_unknown', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0 /" // NL // &
+      "&contact_pair slave = 's', master = 'm', method = 'mortar', conditions = 'dual' /", &
+      4, [character(len=FRAG_LEN) :: "&contact_pair 's/m'", "'conditions'", "'dual'", "'weighted'"])
+  end subroutine bad_conditions_unknown
 
   subroutine bad_friction_negative(failure)
     type(failure_t), allocatable, intent(out) :: failure
