@@ -19,6 +19,7 @@ module raccord_contact_energy
   use raccord_strings, only: str
   use raccord_state, only: state_t
   use raccord_contact_pair, only: contact_pair_t
+  use raccord_scene, only: METHOD_MORTAR
   implicit none
   private
 
@@ -74,9 +75,26 @@ contains
         str(state%time) // ' (step ' // str(state%step) // '), ' // str(frac, 3) // ' of the energy scale ' // &
         str(state%energy%scale, 3) // ' (threshold ' // str(CONTACT_ENERGY_WARN, 2) // '). The energy ' // &
         'balance still closes: this energy is in the kinetic and internal energy and is not physical. ' // &
-        'Refine the surfaces or make the finer or softer surface the slave (doc/theory-contact.md, section 7).')
+        'Refine the surfaces or make the finer or softer surface the slave' // trim(weighted_advice(pairs)) // &
+        ' (doc/theory-contact.md, section 7).')
     end if
   end subroutine watch_contact_energy
+
+  !> For a scene with a mortar pair under the paper's nodal conditions: the
+  !> pair key that gives no energy from them (doc/scene-reference.md).
+  function weighted_advice(pairs) result(s)
+    type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=:), allocatable :: s
+    integer :: k
+    s = ''
+    do k = 1, size(pairs)
+      if (pairs(k)%method == METHOD_MORTAR .and. .not. pairs(k)%weighted) then
+        s = '; for mortar pair ' // str(k) // ' (' // pairs(k)%name // '), conditions = ''weighted'' ' // &
+          'takes out the energy of a curved or Q8 slave and of sliding'
+        return
+      end if
+    end do
+  end function weighted_advice
 
   !> What the watch has seen, for a checkpoint: a restarted run reports
   !> the largest energy given over the whole run, and warns once.
@@ -107,7 +125,8 @@ contains
       call log_warn('contact', 'contact gave the bodies energy: at most ' // str(watch%worst_given, 3) // &
         ' (' // str(watch%worst, 3) // ' of the energy scale, threshold ' // str(CONTACT_ENERGY_WARN, 2) // &
         ') at t = ' // str(watch%worst_time) // '; at the end ' // str(contact_energy_given(state, watch), 3) // &
-        '. The results are suspect where it happened (doc/theory-contact.md, section 7).')
+        '. The results are suspect where it happened' // trim(weighted_advice(pairs)) // &
+        ' (doc/theory-contact.md, section 7).')
     else
       call log_info('raccord', 'energy given by contact: at most ' // str(watch%worst, 3) // &
         ' of the energy scale (warning above ' // str(CONTACT_ENERGY_WARN, 2) // ')')
