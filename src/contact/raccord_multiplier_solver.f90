@@ -138,10 +138,7 @@ contains
     if (.not. friction .and. .not. cs%weighted) then
       call solve_frictionless(cs, dt, max_iter, w, same, info)
       if (info == 0) then
-        if (.not. same) w%converged = .false.
-        w%residual = condition_residual(cs, mu, friction, w)
-        status(1:m) = w%status(1:m)
-        sigma(1:m) = w%sigma(1:m)
+        call finish_solve(cs, mu, friction, same, w, status, sigma)
         return
       end if
       w%status(1:m) = status(1:m)
@@ -150,10 +147,7 @@ contains
     else if (friction .and. cs%g1_band == 0 .and. .not. cs%weighted) then
       call solve_diagonal_friction(cs, dt, mu, max_iter, w, same, info)
       if (info == 0) then
-        if (.not. same) w%converged = .false.
-        w%residual = condition_residual(cs, mu, friction, w)
-        status(1:m) = w%status(1:m)
-        sigma(1:m) = w%sigma(1:m)
+        call finish_solve(cs, mu, friction, same, w, status, sigma)
         return
       end if
       w%status(1:m) = status(1:m)
@@ -193,11 +187,23 @@ contains
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit
     end do
+    call finish_solve(cs, mu, friction, same, w, status, sigma)
+  end subroutine solve_multipliers
+
+  !> The report of a solve (converged when the sets settled, the residual
+  !> of the conditions) and the final sets and slip directions handed back.
+  subroutine finish_solve(cs, mu, friction, same, w, status, sigma)
+    type(constraint_set_t), intent(in) :: cs
+    real(wp), intent(in) :: mu
+    logical, intent(in) :: friction, same
+    type(solver_work_t), intent(inout) :: w
+    integer, intent(inout) :: status(:)
+    real(wp), intent(inout) :: sigma(:)
     if (.not. same) w%converged = .false.
     w%residual = condition_residual(cs, mu, friction, w)
-    status(1:m) = w%status(1:m)
-    sigma(1:m) = w%sigma(1:m)
-  end subroutine solve_multipliers
+    status(1:cs%m) = w%status(1:cs%m)
+    sigma(1:cs%m) = w%sigma(1:cs%m)
+  end subroutine finish_solve
 
   !> Frictionless active-set iteration on the multipliers alone (the
   !> Delassus form; doc/theory-contact.md, section 3). For fixed sets, with

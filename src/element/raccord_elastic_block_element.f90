@@ -75,18 +75,14 @@ contains
     real(wp), intent(out) :: gr(:,:)
     real(wp) :: h11, h21, h12, h22, jac(2, 2), detj, sq
     integer :: ic, il, a
-    if (blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) then
-      ! H = sqrt(c) J^-1 from the map (eqs. 1.4, 6.2), as stored for Q8
-      jac = q4_jacobian(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
-      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
-      sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
-      h11 = sq*jac(2, 2)
-      h21 = -sq*jac(2, 1)
-      h12 = -sq*jac(1, 2)
-      h22 = sq*jac(1, 1)
-    else if (blk%kernel == KERN_Q8) then
-      ! as init_gauss_maps would store it
-      jac = q8_jacobian(blk, e, g)
+    if ((blk%etype == ELEM_Q4 .and. .not. blk%axisymmetric) .or. blk%kernel == KERN_Q8) then
+      ! H = sqrt(c) J^-1 from the map (eqs. 1.4, 6.2), as init_gauss_maps
+      ! would store it for Q8
+      if (blk%kernel == KERN_Q8) then
+        jac = q8_jacobian(blk, e, g)
+      else
+        jac = q4_jacobian(blk%geo(:, e), blk%gxi(1, g), blk%gxi(2, g))
+      end if
       detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
       sq = sqrt(blk%wts(g)*detj*blk%thickness)/detj
       h11 = sq*jac(2, 2)
