@@ -756,6 +756,12 @@ contains
         'own weighted gap; doc/scene-reference.md)', err)
       return
     end select
+    if (spec%weighted .and. spec%method == METHOD_NTS) then
+      call bad_value(deck, blk, label, 'conditions', 'conditions = ''weighted'' is a key of method = ''mortar''', &
+        'node-to-segment already holds each multiplier against its own gap along the master''s normal; ' // &
+        'remove the key or use method = ''mortar''', err)
+      return
+    end if
     spec%slave = trim(slave)
     spec%master = trim(master)
     spec%friction = friction

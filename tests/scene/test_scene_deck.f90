@@ -97,6 +97,7 @@ program test_scene_deck
       new_test('bad: method unknown', bad_method_unknown), &
       new_test('bad: multiplier unknown', bad_multiplier_unknown), &
       new_test('bad: contact conditions unknown', bad_conditions_unknown), &
+      new_test('bad: conditions = weighted with node-to-segment', bad_conditions_nts), &
       new_test('bad: friction negative', bad_friction_negative), &
       new_test('bad: tolerance nonpositive', bad_tolerance_nonpositive), &
       new_test('bad: max iterations zero', bad_max_iterations_zero), &
@@ -1244,6 +1245,16 @@ contains
       "&contact_pair slave = 's', master = 'm', method = 'mortar', conditions = 'dual' /", &
       4, [character(len=FRAG_LEN) :: "&contact_pair 's/m'", "'conditions'", "'dual'", "'weighted'"])
   end subroutine bad_conditions_unknown
+
+  subroutine bad_conditions_nts(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'conditions_nts', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0 /" // NL // &
+      "&contact_pair slave = 's', master = 'm', method = 'node_to_segment', conditions = 'weighted' /", &
+      4, [character(len=FRAG_LEN) :: "&contact_pair 's/m'", "'conditions'", "method = 'mortar'"])
+  end subroutine bad_conditions_nts
 
   subroutine bad_friction_negative(failure)
     type(failure_t), allocatable, intent(out) :: failure
