@@ -52,6 +52,9 @@ module raccord_multiplier_solver
   !> Saddle form (friction with a banded G1): leave out the known gaps of
   !> the constraints in contact (their unit rows).
   logical, parameter :: eliminate_gaps = .true.
+  !> Saddle form: iterations after which one change of set is taken per
+  !> iteration (least_index_change).
+  integer, parameter :: LEAST_INDEX_AFTER = 30
 
   !> Workspace and results, indexed by constraint; buffers grow only.
   type, public :: solver_work_t
@@ -186,9 +189,39 @@ contains
       call update_sets(cs, m, mu, friction, w)
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit
+      if (it > LEAST_INDEX_AFTER) call least_index_change(m, w)
     end do
     call finish_solve(cs, mu, friction, same, w, status, sigma)
   end subroutine solve_multipliers
+
+  !> Keep only the first constraint's change of set (the least index) and
+  !> take the others back. The active-set iteration changes every set at
+  !> once, which settles when the Delassus matrix is close to diagonal (the
+  !> paper's nodal conditions: G1^-T K G1^-1); with the weighted conditions
+  !> K itself is used, and next to the axis or at the end of a contact zone
+  !> a row's neighbour can outweigh it (the ball as Q8 slave in
+  !> axisymmetry: Ktt(8,9) = 202 against Ktt(9,9) = 31), and four
+  !> constraints went round a stick/slip cycle of period 4 until
+  !> max_iterations. Taking one change per iteration, the least index
+  !> first (Murty's rule for complementarity problems with a P-matrix),
+  !> ends such a cycle; it starts only after LEAST_INDEX_AFTER iterations,
+  !> so a solve that settles before is unchanged (doc/theory-contact.md,
+  !> section 3).
+  subroutine least_index_change(m, w)
+    integer, intent(in) :: m
+    type(solver_work_t), intent(inout) :: w
+    integer :: j
+    logical :: first
+    first = .true.
+    do j = 1, m
+      if (w%status(j) == w%status_old(j)) cycle
+      if (first) then
+        first = .false.
+      else
+        w%status(j) = w%status_old(j)
+      end if
+    end do
+  end subroutine least_index_change
 
   !> The report of a solve (converged when the sets settled, the residual
   !> of the conditions) and the final sets and slip directions handed back.

@@ -4,7 +4,7 @@
 #
 #   sh axi_finite_cases.sh CASE RACCORD SOURCE_DIR WORK_DIR
 #
-# CASE        restart, check, nts_friction
+# CASE        restart, check, nts_friction, weighted_friction
 # restart     a neo-Hooke hollow ball (Q8) squashed by a j2 plate in finite
 #             strain, mortar with friction, variable step: stopped by SIGUSR1
 #             in mid-run and restarted, its results equal the continuous
@@ -15,6 +15,11 @@
 #             pushed down 0.25 (a quarter of the radius): the multipliers
 #             converge at every step on this coarse curved master (they
 #             did not once), and contact gives at most 1e-3 of the energy
+# weighted_friction the ball as the (Q8, curved) slave under mortar with
+#             conditions = 'weighted' and friction, held to t = 0.25 (3500
+#             steps): every step's multipliers converge (4 steps cycled
+#             stick/slip until max_iterations before the least-index rule
+#             of raccord_multiplier_solver), no energy from contact
 # Needs sh, awk, cmp, h5dump and h5diff (hdf5-tools); 77 = skipped.
 set -u
 
@@ -78,6 +83,20 @@ nts_friction)
   check "run: exit 0 (got $code)" test "$code" -eq 0
   check "every step's multipliers converged" has nts/ball_nts.log ", 0 unconverged steps"
   given=$(awk '/energy given by contact: at most/ { for (i = 1; i < NF; i++) if ($i == "most") print $(i + 1) }' nts/ball_nts.log)
+  check "contact gave at most 1e-3 of the energy scale (got ${given:-none})" \
+    awk -v g="${given:-1}" 'BEGIN { exit !(g + 0 <= 1.0e-3) }'
+  ;;
+weighted_friction)
+  deck wf
+  sed -e "s/slave = 'p_bottom', master = 'b_right'/slave = 'b_right', master = 'p_bottom'/" \
+    -e "s/method = 'mortar'/method = 'mortar', conditions = 'weighted'/" -e "s/t_end = 0.2,/t_end = 0.25,/" \
+    wf/ball.nml > wf/ball_wf.nml
+  check "the deck is the ball as slave, weighted, to t = 0.25" has wf/ball_wf.nml "slave = 'b_right', master = 'p_bottom', friction = 0.2, method = 'mortar', conditions = 'weighted'"
+  "$raccord" -q -o wf wf/ball_wf.nml > wf/run.out 2>&1
+  code=$?
+  check "run: exit 0 (got $code)" test "$code" -eq 0
+  check "every step's multipliers converged" has wf/ball_wf.log ", 0 unconverged steps"
+  given=$(awk '/energy given by contact: at most/ { for (i = 1; i < NF; i++) if ($i == "most") print $(i + 1) }' wf/ball_wf.log)
   check "contact gave at most 1e-3 of the energy scale (got ${given:-none})" \
     awk -v g="${given:-1}" 'BEGIN { exit !(g + 0 <= 1.0e-3) }'
   ;;

@@ -38,7 +38,7 @@ program test_contact_mortar
     new_test('dual multipliers are refused with a message', test_refusals), &
     new_test('patch test, non-matching Q4 (slave 3 graded, master 11): P1 and P0 uniform', test_patch_q4), &
     new_test('patch test, non-matching Q8 (slave 2 graded, master 7): P1 and P0 uniform', test_patch_q8), &
-    new_test('patch test, fine side as slave (Q4 P1, slave 11, master 3 graded)', test_patch_fine_slave), &
+    new_test('patch test, fine side as slave (Q4 P1 and P0, slave 11, master 3 graded)', test_patch_fine_slave), &
     new_test('P0 against P1 under a load patch (smooth non-uniform pressure)', test_p0_vs_p1), &
     new_test('two bars impact, matching ends (P1): no penetration, momentum, 2L/c', test_impact_matching), &
     new_test('two bars impact, non-matching ends 10:7 (P0): no penetration, momentum', test_impact_nonmatching)])
@@ -371,10 +371,12 @@ contains
   !> graded block is the upper one; `slave_upper` says which block is slave.
   !> Returns the largest |lambda - mean|/p (mortar) or |pressure - mean|/p
   !> (node-to-segment).
-  subroutine patch_case(failure, etype, na, nb, method, mult, slave_upper, err_rel)
+  subroutine patch_case(failure, etype, na, nb, method, mult, slave_upper, err_rel, weighted)
     type(failure_t), allocatable, intent(inout) :: failure
     integer, intent(in) :: etype, na, nb, method, mult
     logical, intent(in) :: slave_upper
+    !> mortar conditions = 'weighted' (default 'nodal')
+    logical, intent(in), optional :: weighted
     real(wp), intent(out) :: err_rel
     real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp, p = 1.0_wp
     type(mesh_t) :: ma, mb, mesh
@@ -406,6 +408,7 @@ contains
       call add_pair(scene, 'a_top', 'b_bottom', method, 0.0_wp)
     end if
     scene%contacts(1)%multiplier = mult
+    if (present(weighted)) scene%contacts(1)%weighted = weighted
     call prepare(scene, mesh, model, pairs, plan, state, failure)
     if (allocated(failure)) return
     bal_max = 0.0_wp
@@ -441,21 +444,28 @@ contains
     call check(failure, bal_max < 1.0e-10_wp, 'energy balance not exact')
   end subroutine patch_case
 
-  !> Mortar P1 and P0 pass; node-to-segment on the same meshes does not.
+  !> Mortar P1 and P0 pass, under both conditions ('nodal', the paper's (19),
+  !> and 'weighted'); node-to-segment on the same meshes does not.
   subroutine patch_trio(failure, etype, na, nb)
     type(failure_t), allocatable, intent(inout) :: failure
     integer, intent(in) :: etype, na, nb
+    character(len=*), parameter :: cond(2) = ['nodal   ', 'weighted']
     real(wp) :: e1, e0, ents
-    call patch_case(failure, etype, na, nb, METHOD_MORTAR, MULT_P1, .true., e1)
-    if (allocated(failure)) return
-    call patch_case(failure, etype, na, nb, METHOD_MORTAR, MULT_P0, .true., e0)
-    if (allocated(failure)) return
+    integer :: ic
+    do ic = 1, 2
+      call patch_case(failure, etype, na, nb, METHOD_MORTAR, MULT_P1, .true., e1, weighted=ic == 2)
+      if (allocated(failure)) return
+      call patch_case(failure, etype, na, nb, METHOD_MORTAR, MULT_P0, .true., e0, weighted=ic == 2)
+      if (allocated(failure)) return
+      write(*, '(3a,es10.3,a,es10.3)') '        conditions ', trim(cond(ic)), ': max |lambda - mean|/p: mortar P1 ', &
+        e1, ', mortar P0 ', e0
+      call check(failure, e1 <= 1.0e-8_wp, trim(cond(ic)) // ': mortar P1 multipliers not uniform')
+      call check(failure, e0 <= 1.0e-8_wp, trim(cond(ic)) // ': mortar P0 multipliers not uniform')
+      if (allocated(failure)) return
+    end do
     call patch_case(failure, etype, na, nb, METHOD_NTS, MULT_P1, .true., ents)
     if (allocated(failure)) return
-    write(*, '(a,es10.3,a,es10.3,a,es10.3)') '        max |lambda - mean|/p: mortar P1 ', e1, ', mortar P0 ', e0, &
-      '; node-to-segment max |pressure - mean|/p ', ents
-    call check(failure, e1 <= 1.0e-8_wp, 'mortar P1 multipliers not uniform')
-    call check(failure, e0 <= 1.0e-8_wp, 'mortar P0 multipliers not uniform')
+    write(*, '(a,es10.3)') '        node-to-segment max |pressure - mean|/p ', ents
     ! The contrast the paper draws (4.1 vs 4.2): node-to-segment fails here.
     call check(failure, ents > 1.0e-3_wp, 'node-to-segment unexpectedly passes this non-matching patch test')
   end subroutine patch_trio
@@ -472,19 +482,29 @@ contains
 
   subroutine test_patch_fine_slave(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    real(wp) :: e1
-    call patch_case(failure, ELEM_Q4, 11, 3, METHOD_MORTAR, MULT_P1, .false., e1)
-    if (allocated(failure)) return
-    write(*, '(a,es10.3)') '        fine slave: max |lambda - mean|/p = ', e1
-    call check(failure, e1 <= 1.0e-8_wp, 'mortar P1 multipliers not uniform with the fine side as slave')
+    real(wp) :: e1, e0
+    integer :: ic
+    do ic = 1, 2
+      call patch_case(failure, ELEM_Q4, 11, 3, METHOD_MORTAR, MULT_P1, .false., e1, weighted=ic == 2)
+      if (allocated(failure)) return
+      call patch_case(failure, ELEM_Q4, 11, 3, METHOD_MORTAR, MULT_P0, .false., e0, weighted=ic == 2)
+      if (allocated(failure)) return
+      write(*, '(3a,es10.3,a,es10.3)') '        fine slave, conditions ', trim(merge('nodal   ', 'weighted', ic == 1)), &
+        ': max |lambda - mean|/p P1 ', e1, ', P0 ', e0
+      call check(failure, e1 <= 1.0e-8_wp, 'mortar P1 multipliers not uniform with the fine side as slave')
+      call check(failure, e0 <= 1.0e-8_wp, 'mortar P0 multipliers not uniform with the fine side as slave')
+      if (allocated(failure)) return
+    end do
   end subroutine test_patch_fine_slave
 
   !> Pressure p on the middle third of the upper block's top only: at the
   !> interface, half a block below, the contact pressure is smooth and
   !> non-uniform. Runs one multiplier space and returns lambda per slave node.
-  subroutine load_patch_case(failure, mult, lam, xs, bal_max)
+  subroutine load_patch_case(failure, mult, lam, xs, bal_max, weighted)
     type(failure_t), allocatable, intent(inout) :: failure
     integer, intent(in) :: mult
+    !> mortar conditions = 'weighted' (default 'nodal')
+    logical, intent(in), optional :: weighted
     real(wp), allocatable, intent(out) :: lam(:), xs(:)
     real(wp), intent(out) :: bal_max
     real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp, p = 1.0_wp
@@ -527,6 +547,7 @@ contains
     call add_bc(scene, 'b_load', BC_PRESSURE, pressure=p)
     call add_pair(scene, 'b_bottom', 'a_top', METHOD_MORTAR, 0.0_wp)
     scene%contacts(1)%multiplier = mult
+    if (present(weighted)) scene%contacts(1)%weighted = weighted
     call prepare(scene, mesh, model, pairs, plan, state, failure)
     if (allocated(failure)) return
     bal_max = 0.0_wp
@@ -554,27 +575,31 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     real(wp), allocatable :: l1(:), l0(:), x1(:), x0(:)
     real(wp) :: b1, b0, diff, lmax, est, h
-    integer :: n, j
-    call load_patch_case(failure, MULT_P1, l1, x1, b1)
-    if (allocated(failure)) return
-    call load_patch_case(failure, MULT_P0, l0, x0, b0)
-    if (allocated(failure)) return
-    n = size(l1)
-    lmax = maxval(l1)
-    diff = maxval(abs(l0 - l1))
-    h = x1(2) - x1(1)
-    est = 0.25_wp*max(abs(l1(2) - l1(1)), abs(l1(n) - l1(n - 1)))
-    do j = 2, n - 1
-      est = max(est, abs(l1(j + 1) - 2.0_wp*l1(j) + l1(j - 1))/24.0_wp)
+    integer :: n, j, ic
+    do ic = 1, 2
+      call load_patch_case(failure, MULT_P1, l1, x1, b1, weighted=ic == 2)
+      if (allocated(failure)) return
+      call load_patch_case(failure, MULT_P0, l0, x0, b0, weighted=ic == 2)
+      if (allocated(failure)) return
+      n = size(l1)
+      lmax = maxval(l1)
+      diff = maxval(abs(l0 - l1))
+      h = x1(2) - x1(1)
+      est = 0.25_wp*max(abs(l1(2) - l1(1)), abs(l1(n) - l1(n - 1)))
+      do j = 2, n - 1
+        est = max(est, abs(l1(j + 1) - 2.0_wp*l1(j) + l1(j - 1))/24.0_wp)
+      end do
+      write(*, '(2a)') '        conditions ', trim(merge('nodal   ', 'weighted', ic == 1))
+      write(*, '(a,es10.3,a,es10.3,a,f7.4,a,f7.4)') '        max |lambda_P0 - lambda_P1| / max lambda = ', &
+        diff/lmax, ' (estimate ', est/lmax, '); lambda_P1 from ', minval(l1)/lmax, ' to 1, h = ', h
+      write(*, '(a,*(f8.4))') '        lambda_P1 / max: ', l1/lmax
+      write(*, '(a,*(f8.4))') '        lambda_P0 / max: ', l0/lmax
+      write(*, '(a,2es10.3)') '        energy balance / scale, max over the runs (P1, P0): ', b1, b0
+      call check(failure, minval(l1) < 0.8_wp*lmax, 'scene too uniform to compare P0 and P1')
+      call check(failure, diff <= 2.0_wp*est + 1.0e-3_wp*lmax, 'P0 and P1 multipliers differ more than the bound')
+      call check(failure, max(b1, b0) < 1.0e-10_wp, 'energy balance not exact')
+      if (allocated(failure)) return
     end do
-    write(*, '(a,es10.3,a,es10.3,a,f7.4,a,f7.4)') '        max |lambda_P0 - lambda_P1| / max lambda = ', &
-      diff/lmax, ' (estimate ', est/lmax, '); lambda_P1 from ', minval(l1)/lmax, ' to 1, h = ', h
-    write(*, '(a,*(f8.4))') '        lambda_P1 / max: ', l1/lmax
-    write(*, '(a,*(f8.4))') '        lambda_P0 / max: ', l0/lmax
-    write(*, '(a,2es10.3)') '        energy balance / scale, max over the runs (P1, P0): ', b1, b0
-    call check(failure, minval(l1) < 0.8_wp*lmax, 'scene too uniform to compare P0 and P1')
-    call check(failure, diff <= 2.0_wp*est + 1.0e-3_wp*lmax, 'P0 and P1 multipliers differ more than the bound')
-    call check(failure, max(b1, b0) < 1.0e-10_wp, 'energy balance not exact')
   end subroutine test_p0_vs_p1
 
 
