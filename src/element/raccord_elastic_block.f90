@@ -58,7 +58,7 @@ module raccord_elastic_block
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, nodes_per_element, element_name
   use raccord_quadrature, only: gauss_legendre
   use raccord_shape, only: shape_quad, node_natural_coords
-  use raccord_colouring, only: colour_chunks
+  use raccord_colouring, only: colour_chunks, chunk_elements
   use raccord_material, only: moduli_t, make_moduli, KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, &
     VOL_FULL, VOL_MEAN, MAT_J2, material_name
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
@@ -103,10 +103,6 @@ module raccord_elastic_block
   !> Q4 map x(xi, eta) = x0 + a xi + b eta + c xi eta (eq. 6.2): geo(1:6, e) =
   !> (a_x, b_x, c_x, a_y, b_y, c_y).
   integer, parameter :: ngeo = 6
-  !> Natural coordinates of the Q4 corners and the hourglass vector h = xi eta.
-  real(wp), parameter :: xi_c(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
-  real(wp), parameter :: eta_c(4) = [-1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp]
-  real(wp), parameter :: hg_c(4) = [1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp]
 
   !> One material, one element type, many elements.
   type, public :: elastic_block_t
@@ -492,6 +488,31 @@ module raccord_elastic_block
       logical, intent(in) :: strain
       real(wp), intent(inout) :: s(:,:), wsum(:)
     end subroutine add_group_finite_axi
+    !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
+    !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
+    !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
+    !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
+    !> colour order (the same bits for any thread count).
+    !> (raccord_elastic_block_stress)
+    module subroutine add_nodal_stress(blk, u, s, wsum, strain, plastic)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: u(:,:)
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+      !> the strain instead (small strain, or logarithmic in finite strain)
+      logical, intent(in), optional :: strain
+      !> j2 blocks: their internal variables (the stress is the return's from
+      !> a copy of them at u); required for their stress
+      type(block_plastic_t), intent(in), optional :: plastic
+    end subroutine add_nodal_stress
+    !> Q4 data of every element: map coefficients (cold) and the kernel's
+    !> beta, gamma, M (hot), theory eqs. 6.2-6.5. Fails (EXIT_INPUT) on
+    !> detJ <= 0 at a Gauss point, naming the element.
+    !> (raccord_elastic_block_q4)
+    module subroutine init_q4_data(blk, x, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine init_q4_data
   end interface
 
 contains
@@ -634,81 +655,6 @@ contains
   end subroutine init_elastic_block
 
 
-  !> Q4 data of every element: map coefficients (cold) and the kernel's
-  !> beta, gamma, M (hot), theory eqs. 6.2-6.5. Fails (EXIT_INPUT) on
-  !> detJ <= 0 at a Gauss point, naming the element.
-  subroutine init_q4_data(blk, x, err)
-    type(elastic_block_t), intent(inout) :: blk
-    real(wp), intent(in) :: x(:,:)
-    type(error_t), intent(inout) :: err
-    character(len=*), parameter :: where = 'init_elastic_block: '
-    real(wp) :: xe(2, 4), geo(ngeo), detj, j4, s, bgx(4), bgy(4), gam(4), hm(3), p1, p2, wq, xi, eta, l2m
-    integer :: e, g, ic, il, a
-
-    l2m = blk%lam + 2.0_wp*blk%mu
-    blk%q4 = 0.0_wp
-    do e = 1, blk%nel
-      ! relative to node 1: the sums below have zero-sum weights, and this
-      ! keeps their round-off at the element's size, not its distance from 0
-      do a = 1, 4
-        xe(:, a) = x(:, blk%conn(a, e)) - x(:, blk%conn(1, e))
-      end do
-      ! eq. 6.2: x(xi, eta) = x0 + a xi + b eta + c xi eta, a = xi_c . x / 4, ...
-      geo(1) = 0.25_wp*dot_product(xi_c, xe(1, :))
-      geo(2) = 0.25_wp*dot_product(eta_c, xe(1, :))
-      geo(3) = 0.25_wp*dot_product(hg_c, xe(1, :))
-      geo(4) = 0.25_wp*dot_product(xi_c, xe(2, :))
-      geo(5) = 0.25_wp*dot_product(eta_c, xe(2, :))
-      geo(6) = 0.25_wp*dot_product(hg_c, xe(2, :))
-      blk%geo(:, e) = geo
-      do g = 1, blk%ngp
-        detj = q4_detj(geo, blk%gxi(1, g), blk%gxi(2, g))
-        if (.not. (detj > 0.0_wp)) then
-          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(ELEM_Q4) // &
-            ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
-            '; its nodes must be counter-clockwise and the element not degenerate')
-          return
-        end if
-      end do
-      associate (ax => geo(1), bx => geo(2), cx => geo(3), ay => geo(4), by => geo(5), cy => geo(6))
-        ! mean gradient b = dN/dx at the centre (eq. 6.2); 4 detJ(0) = area A
-        j4 = 4.0_wp*(ax*by - bx*ay)
-        bgx(1) = (ay - by)/j4
-        bgy(1) = (bx - ax)/j4
-        bgx(2) = (ay + by)/j4
-        bgy(2) = -(ax + bx)/j4
-        bgx(3:4) = -bgx(1:2)
-        bgy(3:4) = -bgy(1:2)
-        ! hourglass vector (eq. 6.3): gamma = (h - (h . x) b_x - (h . y) b_y)/4
-        gam = 0.25_wp*hg_c - cx*bgx - cy*bgy
-        ! H_ij = sum_g w_g h detJ_g dh/dx_i dh/dx_j, dh/dx = p/detJ (eq. 6.4)
-        hm = 0.0_wp
-        do g = 1, blk%ngp
-          xi = blk%gxi(1, g)
-          eta = blk%gxi(2, g)
-          p1 = eta*by - xi*ay
-          p2 = xi*ax - eta*bx
-          wq = blk%wts(g)*blk%thickness/q4_detj(geo, xi, eta)
-          hm(1) = hm(1) + wq*p1*p1
-          hm(2) = hm(2) + wq*p1*p2
-          hm(3) = hm(3) + wq*p2*p2
-        end do
-      end associate
-      s = sqrt(j4*blk%thickness)
-      ic = (e - 1)/chunk_len + 1
-      il = e - (ic - 1)*chunk_len
-      blk%q4(il, q4_bx1, ic) = s*bgx(1)
-      blk%q4(il, q4_bx2, ic) = s*bgx(2)
-      blk%q4(il, q4_by1, ic) = s*bgy(1)
-      blk%q4(il, q4_by2, ic) = s*bgy(2)
-      blk%q4(il, q4_g1:q4_g1 + 3, ic) = gam
-      ! hourglass stiffness (eq. 6.5)
-      blk%q4(il, q4_m11, ic) = l2m*hm(1) + blk%mu*hm(3)
-      blk%q4(il, q4_m12, ic) = (blk%lam + blk%mu)*hm(2)
-      blk%q4(il, q4_m22, ic) = l2m*hm(3) + blk%mu*hm(1)
-    end do
-  end subroutine init_q4_data
-
   !> 1D Lagrange basis polynomial i through the points p, at s.
   pure real(wp) function lagrange_1d(p, i, s)
     real(wp), intent(in) :: p(:), s
@@ -719,15 +665,6 @@ contains
       if (k /= i) lagrange_1d = lagrange_1d*(s - p(k))/(p(i) - p(k))
     end do
   end function lagrange_1d
-
-  !> The elements e0..e1 of group grp (group_len consecutive chunks).
-  pure subroutine group_elements(blk, grp, e0, e1)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: grp
-    integer, intent(out) :: e0, e1
-    e0 = (grp - 1)*blk%group_len*chunk_len + 1
-    e1 = min(grp*blk%group_len*chunk_len, blk%nel)
-  end subroutine group_elements
 
   !> Record, for each group in colour order, the nodes of this block that
   !> nobody touched before it: claimed(n) is true for nodes an earlier
@@ -745,7 +682,7 @@ contains
     nfirst = 0
     do k = 1, size(blk%colour_group)
       blk%zero_ptr(k) = nfirst + 1
-      call group_elements(blk, blk%colour_group(k), e0, e1)
+      call chunk_elements(blk%colour_group(k), blk%group_len*chunk_len, blk%nel, e0, e1)
       do e = e0, e1
         do a = 1, blk%nen
           node = blk%conn(a, e)
@@ -873,72 +810,5 @@ contains
     type(elastic_block_t), intent(in) :: blk
     reports_energy = blk%kinematics == KIN_FINITE .or. blk%material == MAT_J2
   end function reports_energy
-
-  !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
-  !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
-  !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
-  !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
-  !> colour order (the same bits for any thread count).
-  subroutine add_nodal_stress(blk, u, s, wsum, strain, plastic)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: u(:,:)
-    real(wp), intent(inout) :: s(:,:), wsum(:)
-    !> the strain instead (small strain, or logarithmic in finite strain)
-    logical, intent(in), optional :: strain
-    !> j2 blocks: their internal variables (the stress is the return's from
-    !> a copy of them at u); required for their stress
-    type(block_plastic_t), intent(in), optional :: plastic
-    integer :: col, k, e, e0, e1, what
-    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 9
-    integer, parameter :: axi_stress = 5, axi_strain = 6, finite_axi_stress = 7, finite_axi_strain = 8
-    what = small_stress
-    if (present(strain)) then
-      if (strain) what = small_strain
-    end if
-    if (blk%kinematics == KIN_FINITE) what = what + 2
-    if (blk%axisymmetric) what = what + 4
-    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain &
-        .and. what /= finite_axi_strain) then
-      if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
-      what = j2_stress
-    end if
-    !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, s, wsum, what, plastic) &
-    !$omp   private(col, k, e, e0, e1)
-    colours: do col = 1, blk%ncolour
-      !$omp do schedule(static)
-      groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
-        call group_elements(blk, blk%colour_group(k), e0, e1)
-        select case (what)
-        case (small_stress)
-          do e = e0, e1
-            call add_element_stress(blk, e, u, s, wsum)
-          end do
-        case (small_strain)
-          do e = e0, e1
-            call add_element_small_strain(blk, e, u, s, wsum)
-          end do
-        case (finite_stress)
-          do e = e0, e1
-            call add_element_finite(blk, e, u, .false., s, wsum)
-          end do
-        case (finite_strain)
-          do e = e0, e1
-            call add_element_finite(blk, e, u, .true., s, wsum)
-          end do
-        case (j2_stress)
-          call add_group_j2_stress(blk, blk%colour_group(k), u, plastic, s, wsum)
-        case (axi_stress, axi_strain)
-          do e = e0, e1
-            call add_element_axi(blk, e, u, what == axi_strain, s, wsum)
-          end do
-        case (finite_axi_stress, finite_axi_strain)
-          call add_group_finite_axi(blk, blk%colour_group(k), u, what == finite_axi_strain, s, wsum)
-        end select
-      end do groups
-      !$omp end do
-    end do colours
-    !$omp end parallel
-  end subroutine add_nodal_stress
 
 end module raccord_elastic_block

@@ -7,9 +7,9 @@
 !> M the 2x2 Gauss sum of the hourglass-strain energy. A block keeps
 !> beta = sqrt(A h) b (4 reals, b_3 = -b_1, b_4 = -b_2), gamma (4) and M (3)
 !> per element: 11 reals and about 60 flops per element and step
-!> (kernel_q4). The block builds them at set-up (init_q4_data in
-!> raccord_elastic_block, with the cold map coefficients geo(6) that serve
-!> mass, body force, stiffness and stress).
+!> (kernel_q4). The block builds them at set-up (init_q4_data in the
+!> submodule raccord_elastic_block_q4, with the cold map coefficients
+!> geo(6) that serve mass, body force, stiffness and stress).
 !>
 !> The kernel takes one chunk of chunk_len elements, data stored
 !> chunk-major (element index first), as the block's add_internal_force
