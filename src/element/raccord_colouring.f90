@@ -27,7 +27,7 @@ module raccord_colouring
   implicit none
   private
 
-  public :: colour_chunks
+  public :: colour_chunks, chunk_elements
 
   !> Colours examined per pass (bits of one integer(int64) mask).
   integer, parameter :: window = 64
@@ -122,4 +122,13 @@ contains
       count(c) = count(c) + 1
     end do
   end subroutine colour_chunks
+  !> The elements e0..e1 of chunk ic of chunk_len consecutive elements
+  !> among nel (the chunks colour_chunks colours).
+  pure subroutine chunk_elements(ic, chunk_len, nel, e0, e1)
+    integer, intent(in) :: ic, chunk_len, nel
+    integer, intent(out) :: e0, e1
+    e0 = (ic - 1)*chunk_len + 1
+    e1 = min(ic*chunk_len, nel)
+  end subroutine chunk_elements
+
 end module raccord_colouring

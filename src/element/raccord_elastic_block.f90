@@ -7,14 +7,11 @@
 !> the per-element data stored chunk-major (element index first inside a
 !> chunk) so the kernel streams it with unit stride.
 !>
-!> Q4 (theory eqs. 6.2-6.5): the fully integrated (2x2) bilinear stiffness
-!> splits exactly into a constant-strain part built on the mean gradient
-!> b (= the gradient at the element centre) and a rank-2 hourglass part,
-!>   K = (A h) B0^T C B0 + (gamma gamma^T) (x) M,
-!> M the 2x2 Gauss sum of the hourglass-strain energy. The block keeps
-!> beta = sqrt(A h) b (4 reals, b_3 = -b_1, b_4 = -b_2), gamma (4) and M (3)
-!> per element: 11 reals and about 60 flops per element and step. The cold
-!> map coefficients geo(6, nel) serve mass, body force, stiffness and stress.
+!> Q4 (theory eqs. 6.2-6.5): the small-strain plane kernel, the exact
+!> split of the fully integrated stiffness, is raccord_q4_kernel's; the
+!> block builds its 11 reals per element, q4(chunk_len, nq4, nchunk)
+!> (init_q4_data), and keeps the cold map coefficients geo(6, nel), which
+!> serve mass, body force, stiffness and stress.
 !>
 !> Q8 (theory eq. 6.1): at every Gauss point g, with
 !> H = sqrt(w_g detJ h) J^-1 (2x2, 4 reals) and the natural derivatives
@@ -61,12 +58,13 @@ module raccord_elastic_block
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, nodes_per_element, element_name
   use raccord_quadrature, only: gauss_legendre
   use raccord_shape, only: shape_quad, node_natural_coords
-  use raccord_colouring, only: colour_chunks
+  use raccord_colouring, only: colour_chunks, chunk_elements
   use raccord_material, only: moduli_t, make_moduli, KIN_SMALL, KIN_FINITE, MAT_LINEAR, MAT_NEO_HOOKE, MAT_SVK, &
     VOL_FULL, VOL_MEAN, MAT_J2, material_name
   use raccord_finite_kernel, only: kernel_finite_q4, kernel_finite_q8, fin_chunk_len
   use raccord_plasticity, only: j2_t, nhist
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
+  use raccord_q4_kernel, only: kernel_q4, nq4, q4_bx1, q4_bx2, q4_by1, q4_by2, q4_g1, q4_m11, q4_m12, q4_m22
   use raccord_q8_kernel, only: kernel_q8, gather_q8
   implicit none
   private
@@ -102,19 +100,9 @@ module raccord_elastic_block
   !> (11, 12, in the J2 range) (raccord_finite_axi_kernel)
   integer, parameter :: KERN_FINITE_AXI_Q4 = 23, KERN_FINITE_AXI_Q8 = 24
   integer, parameter :: KERN_J2_FINITE_AXI_Q4 = 11, KERN_J2_FINITE_AXI_Q8 = 12
-  !> Slots of the Q4 hot data q4(chunk_len, nq4, nchunk): beta_x1, beta_x2,
-  !> beta_y1, beta_y2 (beta = sqrt(A h) b, eq. 6.2), gamma_1..4 (eq. 6.3),
-  !> M11, M12, M22 (eq. 6.5).
-  integer, parameter :: nq4 = 11
-  integer, parameter :: q4_bx1 = 1, q4_bx2 = 2, q4_by1 = 3, q4_by2 = 4, q4_g1 = 5, &
-    q4_m11 = 9, q4_m12 = 10, q4_m22 = 11
   !> Q4 map x(xi, eta) = x0 + a xi + b eta + c xi eta (eq. 6.2): geo(1:6, e) =
   !> (a_x, b_x, c_x, a_y, b_y, c_y).
   integer, parameter :: ngeo = 6
-  !> Natural coordinates of the Q4 corners and the hourglass vector h = xi eta.
-  real(wp), parameter :: xi_c(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
-  real(wp), parameter :: eta_c(4) = [-1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp]
-  real(wp), parameter :: hg_c(4) = [1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp]
 
   !> One material, one element type, many elements.
   type, public :: elastic_block_t
@@ -500,6 +488,31 @@ module raccord_elastic_block
       logical, intent(in) :: strain
       real(wp), intent(inout) :: s(:,:), wsum(:)
     end subroutine add_group_finite_axi
+    !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
+    !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
+    !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
+    !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
+    !> colour order (the same bits for any thread count).
+    !> (raccord_elastic_block_stress)
+    module subroutine add_nodal_stress(blk, u, s, wsum, strain, plastic)
+      type(elastic_block_t), intent(in) :: blk
+      real(wp), intent(in) :: u(:,:)
+      real(wp), intent(inout) :: s(:,:), wsum(:)
+      !> the strain instead (small strain, or logarithmic in finite strain)
+      logical, intent(in), optional :: strain
+      !> j2 blocks: their internal variables (the stress is the return's from
+      !> a copy of them at u); required for their stress
+      type(block_plastic_t), intent(in), optional :: plastic
+    end subroutine add_nodal_stress
+    !> Q4 data of every element: map coefficients (cold) and the kernel's
+    !> beta, gamma, M (hot), theory eqs. 6.2-6.5. Fails (EXIT_INPUT) on
+    !> detJ <= 0 at a Gauss point, naming the element.
+    !> (raccord_elastic_block_q4)
+    module subroutine init_q4_data(blk, x, err)
+      type(elastic_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: x(:,:)
+      type(error_t), intent(inout) :: err
+    end subroutine init_q4_data
   end interface
 
 contains
@@ -642,81 +655,6 @@ contains
   end subroutine init_elastic_block
 
 
-  !> Q4 data of every element: map coefficients (cold) and the kernel's
-  !> beta, gamma, M (hot), theory eqs. 6.2-6.5. Fails (EXIT_INPUT) on
-  !> detJ <= 0 at a Gauss point, naming the element.
-  subroutine init_q4_data(blk, x, err)
-    type(elastic_block_t), intent(inout) :: blk
-    real(wp), intent(in) :: x(:,:)
-    type(error_t), intent(inout) :: err
-    character(len=*), parameter :: where = 'init_elastic_block: '
-    real(wp) :: xe(2, 4), geo(ngeo), detj, j4, s, bgx(4), bgy(4), gam(4), hm(3), p1, p2, wq, xi, eta, l2m
-    integer :: e, g, ic, il, a
-
-    l2m = blk%lam + 2.0_wp*blk%mu
-    blk%q4 = 0.0_wp
-    do e = 1, blk%nel
-      ! relative to node 1: the sums below have zero-sum weights, and this
-      ! keeps their round-off at the element's size, not its distance from 0
-      do a = 1, 4
-        xe(:, a) = x(:, blk%conn(a, e)) - x(:, blk%conn(1, e))
-      end do
-      ! eq. 6.2: x(xi, eta) = x0 + a xi + b eta + c xi eta, a = xi_c . x / 4, ...
-      geo(1) = 0.25_wp*dot_product(xi_c, xe(1, :))
-      geo(2) = 0.25_wp*dot_product(eta_c, xe(1, :))
-      geo(3) = 0.25_wp*dot_product(hg_c, xe(1, :))
-      geo(4) = 0.25_wp*dot_product(xi_c, xe(2, :))
-      geo(5) = 0.25_wp*dot_product(eta_c, xe(2, :))
-      geo(6) = 0.25_wp*dot_product(hg_c, xe(2, :))
-      blk%geo(:, e) = geo
-      do g = 1, blk%ngp
-        detj = q4_detj(geo, blk%gxi(1, g), blk%gxi(2, g))
-        if (.not. (detj > 0.0_wp)) then
-          call raise_error(err, EXIT_INPUT, where // 'element ' // str(e) // ' (' // element_name(ELEM_Q4) // &
-            ', block index) has detJ = ' // str(detj) // ' <= 0 at Gauss point ' // str(g) // &
-            '; its nodes must be counter-clockwise and the element not degenerate')
-          return
-        end if
-      end do
-      associate (ax => geo(1), bx => geo(2), cx => geo(3), ay => geo(4), by => geo(5), cy => geo(6))
-        ! mean gradient b = dN/dx at the centre (eq. 6.2); 4 detJ(0) = area A
-        j4 = 4.0_wp*(ax*by - bx*ay)
-        bgx(1) = (ay - by)/j4
-        bgy(1) = (bx - ax)/j4
-        bgx(2) = (ay + by)/j4
-        bgy(2) = -(ax + bx)/j4
-        bgx(3:4) = -bgx(1:2)
-        bgy(3:4) = -bgy(1:2)
-        ! hourglass vector (eq. 6.3): gamma = (h - (h . x) b_x - (h . y) b_y)/4
-        gam = 0.25_wp*hg_c - cx*bgx - cy*bgy
-        ! H_ij = sum_g w_g h detJ_g dh/dx_i dh/dx_j, dh/dx = p/detJ (eq. 6.4)
-        hm = 0.0_wp
-        do g = 1, blk%ngp
-          xi = blk%gxi(1, g)
-          eta = blk%gxi(2, g)
-          p1 = eta*by - xi*ay
-          p2 = xi*ax - eta*bx
-          wq = blk%wts(g)*blk%thickness/q4_detj(geo, xi, eta)
-          hm(1) = hm(1) + wq*p1*p1
-          hm(2) = hm(2) + wq*p1*p2
-          hm(3) = hm(3) + wq*p2*p2
-        end do
-      end associate
-      s = sqrt(j4*blk%thickness)
-      ic = (e - 1)/chunk_len + 1
-      il = e - (ic - 1)*chunk_len
-      blk%q4(il, q4_bx1, ic) = s*bgx(1)
-      blk%q4(il, q4_bx2, ic) = s*bgx(2)
-      blk%q4(il, q4_by1, ic) = s*bgy(1)
-      blk%q4(il, q4_by2, ic) = s*bgy(2)
-      blk%q4(il, q4_g1:q4_g1 + 3, ic) = gam
-      ! hourglass stiffness (eq. 6.5)
-      blk%q4(il, q4_m11, ic) = l2m*hm(1) + blk%mu*hm(3)
-      blk%q4(il, q4_m12, ic) = (blk%lam + blk%mu)*hm(2)
-      blk%q4(il, q4_m22, ic) = l2m*hm(3) + blk%mu*hm(1)
-    end do
-  end subroutine init_q4_data
-
   !> 1D Lagrange basis polynomial i through the points p, at s.
   pure real(wp) function lagrange_1d(p, i, s)
     real(wp), intent(in) :: p(:), s
@@ -727,15 +665,6 @@ contains
       if (k /= i) lagrange_1d = lagrange_1d*(s - p(k))/(p(i) - p(k))
     end do
   end function lagrange_1d
-
-  !> The elements e0..e1 of group grp (group_len consecutive chunks).
-  pure subroutine group_elements(blk, grp, e0, e1)
-    type(elastic_block_t), intent(in) :: blk
-    integer, intent(in) :: grp
-    integer, intent(out) :: e0, e1
-    e0 = (grp - 1)*blk%group_len*chunk_len + 1
-    e1 = min(grp*blk%group_len*chunk_len, blk%nel)
-  end subroutine group_elements
 
   !> Record, for each group in colour order, the nodes of this block that
   !> nobody touched before it: claimed(n) is true for nodes an earlier
@@ -753,7 +682,7 @@ contains
     nfirst = 0
     do k = 1, size(blk%colour_group)
       blk%zero_ptr(k) = nfirst + 1
-      call group_elements(blk, blk%colour_group(k), e0, e1)
+      call chunk_elements(blk%colour_group(k), blk%group_len*chunk_len, blk%nel, e0, e1)
       do e = e0, e1
         do a = 1, blk%nen
           node = blk%conn(a, e)
@@ -874,62 +803,6 @@ contains
     !$omp end parallel
   end subroutine add_internal_force
 
-  !> fe = K_e ue for nc Q4 elements of a chunk, fully integrated K in the
-  !> exact split K = (A h) B0^T C B0 + (gamma gamma^T) (x) M (theory eqs.
-  !> 6.2-6.5). One element per iteration, the loop runs across the chunk in
-  !> SIMD lanes; every array is read with unit stride.
-  pure subroutine kernel_q4(nc, lam, mu, hq, ue, fe)
-    integer, intent(in) :: nc
-    real(wp), intent(in) :: lam, mu, hq(chunk_len, nq4), ue(chunk_len, 2, max_nen)
-    real(wp), intent(inout) :: fe(chunk_len, 2, max_nen)
-    real(wp) :: bx1, bx2, by1, by2, g1, g2, g3, g4, dx13, dx24, dy13, dy24
-    real(wp) :: gxx, gxy, gyx, gyy, tr, sxx, syy, sxy, fx1, fx2, fy1, fy2, qx, qy, rx, ry, mu2
-    integer :: i
-    mu2 = 2.0_wp*mu
-    elements: do i = 1, nc
-      bx1 = hq(i, q4_bx1)
-      bx2 = hq(i, q4_bx2)
-      by1 = hq(i, q4_by1)
-      by2 = hq(i, q4_by2)
-      ! constant-strain part (eq. 6.2): sqrt(A h) grad u = sum_a u_a beta_a^T,
-      ! with beta_3 = -beta_1, beta_4 = -beta_2
-      dx13 = ue(i, 1, 1) - ue(i, 1, 3)
-      dx24 = ue(i, 1, 2) - ue(i, 1, 4)
-      dy13 = ue(i, 2, 1) - ue(i, 2, 3)
-      dy24 = ue(i, 2, 2) - ue(i, 2, 4)
-      gxx = bx1*dx13 + bx2*dx24
-      gxy = by1*dx13 + by2*dx24
-      gyx = bx1*dy13 + bx2*dy24
-      gyy = by1*dy13 + by2*dy24
-      ! Hooke (eq. 3.1), scaled by sqrt(A h); f_a = sigma beta_a
-      tr = lam*(gxx + gyy)
-      sxx = tr + mu2*gxx
-      syy = tr + mu2*gyy
-      sxy = mu*(gxy + gyx)
-      fx1 = sxx*bx1 + sxy*by1
-      fx2 = sxx*bx2 + sxy*by2
-      fy1 = sxy*bx1 + syy*by1
-      fy2 = sxy*bx2 + syy*by2
-      ! hourglass part (eqs. 6.4-6.5): q = gamma . u, f_a += gamma_a M q
-      g1 = hq(i, q4_g1)
-      g2 = hq(i, q4_g1 + 1)
-      g3 = hq(i, q4_g1 + 2)
-      g4 = hq(i, q4_g1 + 3)
-      qx = g1*ue(i, 1, 1) + g2*ue(i, 1, 2) + g3*ue(i, 1, 3) + g4*ue(i, 1, 4)
-      qy = g1*ue(i, 2, 1) + g2*ue(i, 2, 2) + g3*ue(i, 2, 3) + g4*ue(i, 2, 4)
-      rx = hq(i, q4_m11)*qx + hq(i, q4_m12)*qy
-      ry = hq(i, q4_m12)*qx + hq(i, q4_m22)*qy
-      fe(i, 1, 1) = fx1 + g1*rx
-      fe(i, 1, 2) = fx2 + g2*rx
-      fe(i, 1, 3) = g3*rx - fx1
-      fe(i, 1, 4) = g4*rx - fx2
-      fe(i, 2, 1) = fy1 + g1*ry
-      fe(i, 2, 2) = fy2 + g2*ry
-      fe(i, 2, 3) = g3*ry - fy1
-      fe(i, 2, 4) = g4*ry - fy2
-    end do elements
-  end subroutine kernel_q4
-
   !> The block's kernel reports its stored energy (and more) through a
   !> block_watch_t: finite strain and j2 blocks; the linear blocks' energy
   !> is 1/2 u' f_int.
@@ -937,72 +810,5 @@ contains
     type(elastic_block_t), intent(in) :: blk
     reports_energy = blk%kinematics == KIN_FINITE .or. blk%material == MAT_J2
   end function reports_energy
-
-  !> s(4, nnode) += (sxx, syy, sxy, szz) of each element extrapolated from
-  !> its Gauss points to its nodes (theory eq. 7.1); wsum(nnode) += 1 per
-  !> contribution, so s/wsum is the nodal average. szz = nu (sxx + syy) in
-  !> plane strain, 0 in plane stress. Threaded as add_internal_force, in
-  !> colour order (the same bits for any thread count).
-  subroutine add_nodal_stress(blk, u, s, wsum, strain, plastic)
-    type(elastic_block_t), intent(in) :: blk
-    real(wp), intent(in) :: u(:,:)
-    real(wp), intent(inout) :: s(:,:), wsum(:)
-    !> the strain instead (small strain, or logarithmic in finite strain)
-    logical, intent(in), optional :: strain
-    !> j2 blocks: their internal variables (the stress is the return's from
-    !> a copy of them at u); required for their stress
-    type(block_plastic_t), intent(in), optional :: plastic
-    integer :: col, k, e, e0, e1, what
-    integer, parameter :: small_stress = 1, small_strain = 2, finite_stress = 3, finite_strain = 4, j2_stress = 9
-    integer, parameter :: axi_stress = 5, axi_strain = 6, finite_axi_stress = 7, finite_axi_strain = 8
-    what = small_stress
-    if (present(strain)) then
-      if (strain) what = small_strain
-    end if
-    if (blk%kinematics == KIN_FINITE) what = what + 2
-    if (blk%axisymmetric) what = what + 4
-    if (blk%material == MAT_J2 .and. what /= small_strain .and. what /= finite_strain .and. what /= axi_strain &
-        .and. what /= finite_axi_strain) then
-      if (.not. present(plastic)) error stop 'add_nodal_stress: a j2 block needs its plastic state'
-      what = j2_stress
-    end if
-    !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, s, wsum, what, plastic) &
-    !$omp   private(col, k, e, e0, e1)
-    colours: do col = 1, blk%ncolour
-      !$omp do schedule(static)
-      groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
-        call group_elements(blk, blk%colour_group(k), e0, e1)
-        select case (what)
-        case (small_stress)
-          do e = e0, e1
-            call add_element_stress(blk, e, u, s, wsum)
-          end do
-        case (small_strain)
-          do e = e0, e1
-            call add_element_small_strain(blk, e, u, s, wsum)
-          end do
-        case (finite_stress)
-          do e = e0, e1
-            call add_element_finite(blk, e, u, .false., s, wsum)
-          end do
-        case (finite_strain)
-          do e = e0, e1
-            call add_element_finite(blk, e, u, .true., s, wsum)
-          end do
-        case (j2_stress)
-          call add_group_j2_stress(blk, blk%colour_group(k), u, plastic, s, wsum)
-        case (axi_stress, axi_strain)
-          do e = e0, e1
-            call add_element_axi(blk, e, u, what == axi_strain, s, wsum)
-          end do
-        case (finite_axi_stress, finite_axi_strain)
-          call add_group_finite_axi(blk, blk%colour_group(k), u, what == finite_axi_strain, s, wsum)
-        end select
-      end do groups
-      !$omp end do
-    end do colours
-    !$omp end parallel
-  end subroutine add_nodal_stress
 
 end module raccord_elastic_block
