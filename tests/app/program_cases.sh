@@ -364,6 +364,11 @@ check_contact)
   # sagitta (7.5e-4 mm on this mesh).
   deck=$(basename "$extra")
   cp "$(dirname "$extra")"/paper_q4*.msh "$work/"
+  # A mortar multiplier space asked of node-to-segment: said, not ignored.
+  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'node_to_segment', multiplier = 'P0'/" "$extra" > "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  expect_text "$work/stderr.txt" "multiplier = 'P0' has no effect with node-to-segment" "the warning on P0 with node-to-segment"
   for d in 0.05 0.0; do
     sed "s/value = 0.0, -0.1581/value = 0.0, -$d/" "$extra" > "$work/$deck"
     run --check "$deck"
