@@ -13,7 +13,7 @@ module raccord_contact_pair
   use raccord_log, only: log_warn
   use raccord_strings, only: str
   use raccord_mesh, only: mesh_t
-  use raccord_scene, only: scene_t, METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0
+  use raccord_scene, only: scene_t, METHOD_NTS, METHOD_MORTAR, MULT_P1, multiplier_name
   use raccord_model, only: model_t
   use raccord_state, only: state_t
   use raccord_contact_surface, only: contact_surface_t, build_contact_surface
@@ -107,8 +107,8 @@ contains
           call init_mortar(pair%slave, pair%master, spec%multiplier, where, pair%mortar, err)
           if (err%failed()) return
         else if (spec%multiplier /= MULT_P1) then
-          call log_warn('contact', where // ': multiplier = ''' // trim(merge('P0  ', 'dual', &
-            spec%multiplier == MULT_P0)) // ''' has no effect with node-to-segment matching, whose ' // &
+          call log_warn('contact', where // ': multiplier = ''' // multiplier_name(spec%multiplier) // &
+            ''' has no effect with node-to-segment matching, whose ' // &
             'multipliers sit at the slave nodes; the P0/P1 choice is a mortar one (method = ''mortar'')')
         end if
         bs = surface_body(model, pair%slave)

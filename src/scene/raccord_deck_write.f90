@@ -11,7 +11,7 @@ module raccord_deck_write
   use raccord_strings, only: str
   use raccord_material, only: KIN_FINITE, MAT_J2, kinematics_name, material_name, volumetric_name
   use raccord_scene, only: scene_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE, &
-    METHOD_NTS, METHOD_MORTAR, MULT_P1, MULT_P0, MULT_DUAL
+    METHOD_NTS, METHOD_MORTAR, multiplier_name
   implicit none
   private
 
@@ -168,16 +168,7 @@ contains
           case default
             call put_text(unit, 'method', 'unknown_' // str(p%method), ios, msg)
           end select
-          select case (p%multiplier)
-          case (MULT_P1)
-            call put_text(unit, 'multiplier', 'P1', ios, msg)
-          case (MULT_P0)
-            call put_text(unit, 'multiplier', 'P0', ios, msg)
-          case (MULT_DUAL)
-            call put_text(unit, 'multiplier', 'dual', ios, msg)
-          case default
-            call put_text(unit, 'multiplier', 'unknown_' // str(p%multiplier), ios, msg)
-          end select
+          call put_text(unit, 'multiplier', multiplier_name(p%multiplier), ios, msg)
           call put_text(unit, 'conditions', trim(merge('weighted', 'nodal   ', p%weighted)), ios, msg)
           call put(unit, '  friction = ' // real_text(p%friction), ios, msg)
           call put(unit, '  search_distance = ' // real_text(p%search_distance), ios, msg)

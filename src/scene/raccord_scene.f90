@@ -10,6 +10,7 @@
 module raccord_scene
   use raccord_kinds, only: wp, name_len, path_len
   use raccord_material, only: KIN_SMALL, MAT_LINEAR, VOL_AUTO
+  use raccord_strings, only: str
   implicit none
   private
 
@@ -137,5 +138,23 @@ module raccord_scene
     type(contact_spec_t), allocatable :: contacts(:)
   end type scene_t
 
-  public :: name_len, path_len
+  public :: name_len, path_len, multiplier_name
+
+contains
+
+  !> The deck's spelling of a multiplier space (MULT_*): 'P1', 'P0', 'dual'.
+  pure function multiplier_name(multiplier) result(name)
+    integer, intent(in) :: multiplier
+    character(len=:), allocatable :: name
+    select case (multiplier)
+    case (MULT_P1)
+      name = 'P1'
+    case (MULT_P0)
+      name = 'P0'
+    case (MULT_DUAL)
+      name = 'dual'
+    case default
+      name = 'unknown_' // str(multiplier)
+    end select
+  end function multiplier_name
 end module raccord_scene
