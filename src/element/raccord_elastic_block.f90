@@ -706,6 +706,10 @@ contains
   !> first sets the nodes it claimed (claim_first_touch) to zero, so that
   !> over the blocks claimed together f = K u without zeroing f beforehand
   !> (nodes no block claims are left as they are).
+  !> On one thread (or below min_parallel_chunks) the loop runs without a
+  !> parallel region: its worksharing directives are orphaned and cost
+  !> nothing, where a region with a false `if` still makes a team of one
+  !> whose barriers and end each make a futex system call in libgomp.
   subroutine add_internal_force(blk, u, f, fresh, watch, monitor, plastic)
     type(elastic_block_t), intent(in) :: blk
     real(wp), intent(in) :: u(:,:)
@@ -718,21 +722,38 @@ contains
     !> j2 blocks: the internal variables, updated by the return (required
     !> for a j2 block)
     type(block_plastic_t), intent(inout), optional :: plastic
-    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), en, jm, w2, dis
-    real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len), xe(chunk_len, 2, max_nen)
-    integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
-    logical :: reset, mon, watched
-    nen = blk%nen
+    logical :: reset, mon
     reset = .false.
     if (present(fresh)) reset = fresh
     mon = .false.
     if (present(monitor)) mon = monitor
-    watched = present(watch)
     if (blk%material == MAT_J2 .and. .not. present(plastic)) error stop 'add_internal_force: a j2 block needs its plastic state'
+    if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) then
+      !$omp parallel num_threads(blk%nthreads) default(shared)
+      call force_colours(blk, u, f, reset, mon, watch, plastic)
+      !$omp end parallel
+    else
+      call force_colours(blk, u, f, reset, mon, watch, plastic)
+    end if
+  end subroutine add_internal_force
+
+  !> The colour loop of add_internal_force, run by every thread of the
+  !> team (or by the caller alone): the groups of a colour are shared out by
+  !> an orphaned `omp do`, whose implicit barrier ends the colour.
+  subroutine force_colours(blk, u, f, reset, mon, watch, plastic)
+    type(elastic_block_t), intent(in) :: blk
+    real(wp), intent(in) :: u(:,:)
+    real(wp), intent(inout) :: f(:,:)
+    logical, intent(in) :: reset, mon
+    type(block_watch_t), intent(inout), optional :: watch
+    type(block_plastic_t), intent(inout), optional :: plastic
+    real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), en, jm, w2, dis
+    real(wp) :: sgp(chunk_len, 4, max_gp), act(chunk_len), xe(chunk_len, 2, max_nen)
+    integer :: col, k, grp, ic, e0, nc, i, a, node, nen, j, jel
+    logical :: watched
+    nen = blk%nen
+    watched = present(watch)
     dis = 0.0_wp
-    !$omp parallel if (blk%nthreads > 1 .and. blk%nchunk >= min_parallel_chunks) num_threads(blk%nthreads) &
-    !$omp   default(none) shared(blk, u, f, nen, reset, mon, watched, watch, plastic) &
-    !$omp   private(col, k, grp, ic, e0, nc, i, a, node, ue, fe, j, en, jm, jel, w2, dis, sgp, act, xe)
     colours: do col = 1, blk%ncolour
       !$omp do schedule(static)
       groups: do k = blk%colour_ptr(col), blk%colour_ptr(col + 1) - 1
@@ -800,8 +821,7 @@ contains
       end do groups
       !$omp end do
     end do colours
-    !$omp end parallel
-  end subroutine add_internal_force
+  end subroutine force_colours
 
   !> The block's kernel reports its stored energy (and more) through a
   !> block_watch_t: finite strain and j2 blocks; the linear blocks' energy

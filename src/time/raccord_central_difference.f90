@@ -130,9 +130,44 @@ contains
       state%cdof_vold(j) = state%v(model%cdof_comp(j), model%cdof_node(j))
     end do
 
-    !$omp parallel if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) &
-    !$omp   num_threads(model%nthreads) default(none) &
-    !$omp   shared(model, state, part, dpart, sums, h, dt, first) private(s)
+    ! On one thread (or a small model) no parallel region: the orphaned
+    ! worksharing directives of predict_all then cost nothing, where a
+    ! region with a false `if` makes a team of one whose barriers each make
+    ! a futex system call in libgomp.
+    if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) then
+      !$omp parallel num_threads(model%nthreads) default(shared)
+      call predict_all(model, state, h, dt, first, part, dpart, sums)
+      !$omp end parallel
+    else
+      call predict_all(model, state, h, dt, first, part, dpart, sums)
+    end if
+
+    associate (ke => sums(1), ie => sums(2), kh => sums(3), cross => sums(4))
+      state%energy%kinetic = 0.5_wp*ke
+      state%energy%internal = 0.5_wp*ie
+      ! (E-1); a contact correction of u(n+1) and v(n+1/2) must update it at
+      ! the nodes it moves.
+      state%energy%discrete = 0.5_wp*(kh + cross)
+    end associate
+    if (model%has_finite .or. model%has_plastic) call finite_energy(model, state)
+    if (model%has_damping) then
+      ! Dissipation of the semi-implicit damping term over the step:
+      ! alpha h v' M v with v the mean of the two half-step velocities
+      ! (on the first half step, of v(0) and v(1/2)).
+      state%energy%damping = state%energy%damping + h*sum_in_order(dpart)
+    end if
+  end subroutine predict_motion
+
+  !> The per-node work of predict_motion, run by every thread of the team
+  !> (or by the caller alone): the free nodes by segments, the constrained
+  !> dofs on one thread, then the damping sum by segments.
+  subroutine predict_all(model, state, h, dt, first, part, dpart, sums)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(inout) :: state
+    real(wp), intent(in) :: h, dt
+    logical, intent(in) :: first
+    real(wp), intent(inout) :: part(4, nseg), dpart(nseg), sums(4)
+    integer :: s
     !$omp do schedule(static)
     free_nodes: do s = 1, nseg
       call predict_nodes(model, state, h, dt, first, seg_first(s, model%nnode), seg_last(s, model%nnode), &
@@ -152,23 +187,7 @@ contains
       end do damped_nodes
       !$omp end do
     end if
-    !$omp end parallel
-
-    associate (ke => sums(1), ie => sums(2), kh => sums(3), cross => sums(4))
-      state%energy%kinetic = 0.5_wp*ke
-      state%energy%internal = 0.5_wp*ie
-      ! (E-1); a contact correction of u(n+1) and v(n+1/2) must update it at
-      ! the nodes it moves.
-      state%energy%discrete = 0.5_wp*(kh + cross)
-    end associate
-    if (model%has_finite .or. model%has_plastic) call finite_energy(model, state)
-    if (model%has_damping) then
-      ! Dissipation of the semi-implicit damping term over the step:
-      ! alpha h v' M v with v the mean of the two half-step velocities
-      ! (on the first half step, of v(0) and v(1/2)).
-      state%energy%damping = state%energy%damping + h*sum_in_order(dpart)
-    end if
-  end subroutine predict_motion
+  end subroutine predict_all
 
   !> (CD-1), (CD-2) at the nodes i0..i1 as if free, with the semi-implicit
   !> damping; part = this segment's sums of m v(n)^2, u(n)' f_int,
