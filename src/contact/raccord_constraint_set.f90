@@ -69,14 +69,17 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: snode, gnode
     real(wp), intent(in) :: normal(2), length, coord
-    integer :: j
+    integer :: j, d
     cs%m = cs%m + 1
     j = cs%m
     cs%snode(j) = snode
     cs%gnode(j) = gnode
     cs%normal(:, j) = normal
     cs%tangent(:, j) = [normal(2), -normal(1)]
-    cs%g1(:, j) = 0.0_wp
+    ! (A loop of known length: the section was a call to memset per row.)
+    do d = -G1_MAX_BAND, G1_MAX_BAND
+      cs%g1(d, j) = 0.0_wp
+    end do
     cs%g1(0, j) = 1.0_wp
     cs%length(j) = length
     cs%coord(j) = coord

@@ -212,8 +212,12 @@ contains
     call slave_normals(slave, x, v, w)
     do t = 1, v%nmnear
       l = v%mnear(t)
-      w%xi_seg(w%mcorner(:, l)) = 0
-      w%f_seg(w%mcorner(:, l)) = 0
+      ! (Element by element: a vector subscript on the left made gfortran
+      ! allocate a temporary here, twice per listed segment and step.)
+      w%xi_seg(w%mcorner(1, l)) = 0
+      w%xi_seg(w%mcorner(2, l)) = 0
+      w%f_seg(w%mcorner(1, l)) = 0
+      w%f_seg(w%mcorner(2, l)) = 0
     end do
     w%nment = 0
     slave_segments: do tn = 1, v%nnear
@@ -223,8 +227,7 @@ contains
       do a = 1, nen
         nn(:, a) = w%nrm(:, w%pos(a, k))
       end do
-      w%g1loc(:, :, k) = 0.0_wp
-      w%nmloc(:, :, k) = 0.0_wp
+      call clear_segment(w, k)
       lo = xs(:, 1)
       hi = xs(:, 1)
       do a = 2, nen
@@ -379,7 +382,8 @@ contains
         else
           call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
         end if
-        cs%g1(:, j) = 0.0_wp
+        ! cs_add_row left column j of G1 zero but for the diagonal 1.
+        cs%g1(0, j) = 0.0_wp
         do t = 1, w%nadj(c)
           k = w%adj_seg(t, c)
           b = w%adj_loc(t, c)
@@ -863,7 +867,8 @@ contains
         if (w%stamp(c) == w%nstep) cycle
         w%stamp(c) = w%nstep
         w%covered(c) = .false.
-        w%nrm(:, c) = 0.0_wp
+        w%nrm(1, c) = 0.0_wp
+        w%nrm(2, c) = 0.0_wp
         do t = 1, w%nadj(c)
           kk = w%adj_seg(t, c)
           if (slave%nen_seg == 2) then
@@ -908,6 +913,22 @@ contains
     t = x1*(-0.5_wp) + x2*0.5_wp
     n = [t(2), -t(1)]/max(sqrt(t(1)**2 + t(2)**2), tiny(1.0_wp))
   end function line_normal
+
+  !> Zero slave segment k's integrals (g1loc, nmloc) with stores written
+  !> out: the array sections were a call to memset each, per near segment
+  !> and step.
+  subroutine clear_segment(w, k)
+    type(mortar_work_t), intent(inout) :: w
+    integer, intent(in) :: k
+    integer :: a
+    do a = 1, 3
+      w%g1loc(1, a, k) = 0.0_wp
+      w%g1loc(2, a, k) = 0.0_wp
+      w%g1loc(3, a, k) = 0.0_wp
+      w%nmloc(1, a, k) = 0.0_wp
+      w%nmloc(2, a, k) = 0.0_wp
+    end do
+  end subroutine clear_segment
 
   subroutine load_segment(surf, x, k, xs)
     type(contact_surface_t), intent(in) :: surf

@@ -404,7 +404,8 @@ contains
     do t = 1, v%nmdil
       k = v%mdil(t)
       do a = 1, master%nen_seg
-        nodal_normal(:, master%seg(a, k)) = 0.0_wp
+        nodal_normal(1, master%seg(a, k)) = 0.0_wp
+        nodal_normal(2, master%seg(a, k)) = 0.0_wp
       end do
     end do
     do t = 1, v%nmdil
@@ -420,8 +421,11 @@ contains
         cycle
       end if
       do a = 1, master%nen_seg
-        nodal_normal(:, master%seg(a, k)) = nodal_normal(:, master%seg(a, k)) + &
-          outward_normal(master%nen_seg, xs, NODE_XI(a))
+        ! (Through tn: the sum with the function result in one statement
+        ! made gfortran allocate a temporary.)
+        tn = outward_normal(master%nen_seg, xs, NODE_XI(a))
+        nodal_normal(1, master%seg(a, k)) = nodal_normal(1, master%seg(a, k)) + tn(1)
+        nodal_normal(2, master%seg(a, k)) = nodal_normal(2, master%seg(a, k)) + tn(2)
       end do
     end do
     ! Normalise each node once: the end and mid nodes of every segment, and
