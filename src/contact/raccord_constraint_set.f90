@@ -124,32 +124,46 @@ contains
   !> A whole row at once: cs_add_row, cs_add_entry for each (node(e),
   !> w(e)) with w(e) /= 0 in order, and cs_finish_row, with the same sums
   !> in the same order; a repeated node is merged by a search over this
-  !> row's entries only.
-  subroutine cs_put_row(cs, snode, gnode, normal, length, coord, node, w, x, du)
+  !> row's entries only. With `merged` the entries are distinct already
+  !> (merged by the caller in the order cs_add_entry would have) and are
+  !> written as they are, zeros included.
+  subroutine cs_put_row(cs, snode, gnode, normal, length, coord, node, w, x, du, merged)
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: snode, gnode
     real(wp), intent(in) :: normal(2), length, coord
     integer, intent(in) :: node(:)
     real(wp), intent(in) :: w(:)
     real(wp), intent(in) :: x(:,:), du(:,:)
+    logical, intent(in), optional :: merged
     integer :: e, f, j, p, e0
     real(wp) :: tangent(2), gap, slip
+    logical :: as_is
+    as_is = .false.
+    if (present(merged)) as_is = merged
     call cs_add_row(cs, snode, gnode, normal, length, coord)
     j = cs%m
     if (cs%nent + size(node) > size(cs%ent_node)) call grow(cs, size(cs%snode), 2*size(cs%ent_node) + size(node))
     e0 = cs%nent + 1
-    entries: do e = 1, size(node)
-      if (w(e) == 0.0_wp) cycle
-      do f = e0, cs%nent
-        if (cs%ent_node(f) == node(e)) then
-          cs%ent_w(f) = cs%ent_w(f) + w(e)
-          cycle entries
-        end if
+    if (as_is) then
+      do e = 1, size(node)
+        cs%ent_node(cs%nent + e) = node(e)
+        cs%ent_w(cs%nent + e) = w(e)
       end do
-      cs%nent = cs%nent + 1
-      cs%ent_node(cs%nent) = node(e)
-      cs%ent_w(cs%nent) = w(e)
-    end do entries
+      cs%nent = cs%nent + size(node)
+    else
+      entries: do e = 1, size(node)
+        if (w(e) == 0.0_wp) cycle
+        do f = e0, cs%nent
+          if (cs%ent_node(f) == node(e)) then
+            cs%ent_w(f) = cs%ent_w(f) + w(e)
+            cycle entries
+          end if
+        end do
+        cs%nent = cs%nent + 1
+        cs%ent_node(cs%nent) = node(e)
+        cs%ent_w(cs%nent) = w(e)
+      end do entries
+    end if
     cs%row_ptr(j + 1) = cs%nent + 1
     tangent = [normal(2), -normal(1)]
     gap = 0.0_wp

@@ -32,7 +32,8 @@ module raccord_mortar
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row, &
+    G1_MAX_BAND
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
     intersect_ray, multiplier_basis, multiplier_breaks
@@ -109,6 +110,12 @@ module raccord_mortar
     real(wp), allocatable :: xi_val(:)        !< projected slave parameter of the corner
     integer, allocatable :: f_seg(:)          !< (master ncorner) slave segment whose end f_end was taken at
     real(wp), allocatable :: f_end(:)         !< F of project_along_field at that segment's end node
+    ! The row being assembled (assemble_rows): its distinct nodes in the
+    ! order of first contribution, their summed weights, and each global
+    ! node's place in it (0: not in the row).
+    integer, allocatable :: slot(:)           !< (largest global node number of the pair)
+    integer, allocatable :: rnode(:)
+    real(wp), allocatable :: rw(:)
   end type mortar_work_t
 
   public :: init_mortar, build_mortar
@@ -160,6 +167,8 @@ contains
       if (master%closed .and. k == master%nseg) w%mcorner(2, k) = 1
     end do
     allocate(w%xi_seg(nc), w%f_seg(nc), source=0)
+    allocate(w%slot(max(maxval(slave%node), maxval(master%node))), source=0)
+    allocate(w%rnode(64), w%rw(64))
     allocate(w%xi_val(nc), w%f_end(nc), source=0.0_wp)
     ! Local node a of slave segment k sits at chain position stride*(k-1)+1
     ! (start), stride*k+1 (end), stride*(k-1)+2 (mid): the order of
@@ -318,9 +327,9 @@ contains
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr
     logical :: fold
-    real(wp) :: v, tol
+    real(wp) :: v, tol, g1col(-G1_MAX_BAND:G1_MAX_BAND)
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
@@ -377,13 +386,11 @@ contains
       c = at(q)
       j = w%cidx(c)
       if (j > 0) then
-        if (w%weighted) then
-          call cs_add_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c))
-        else
-          call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
-        end if
-        ! cs_add_row left column j of G1 zero but for the diagonal 1.
-        cs%g1(0, j) = 0.0_wp
+        ! The row's entries merged through w%slot in the order of their
+        ! first contribution, the weights summed in contribution order (as
+        ! cs_add_entry did with a search per entry), and written at once.
+        nr = 0
+        g1col = 0.0_wp
         do t = 1, w%nadj(c)
           k = w%adj_seg(t, c)
           b = w%adj_loc(t, c)
@@ -392,25 +399,52 @@ contains
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
             if (v == 0.0_wp) cycle
-            call cs_add_entry(cs, slave%seg(ai, k), -v)
+            call put(slave%seg(ai, k), -v)
             i = w%cidx(w%pos(ai, k))
             if (i > 0) then
               d = i - j
-              cs%g1(d, j) = cs%g1(d, j) + v
+              g1col(d) = g1col(d) + v
               band = max(band, abs(d))
             end if
           end do
           ! Master entries +G21(a, j).
           do e = w%mbeg(k), w%mend(k)
-            if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
+            if (w%ment_loc(e) == b) call put(w%ment_node(e), w%ment_w(e))
           end do
         end do
-        call cs_finish_row(cs, xpred, du)
+        if (w%weighted) then
+          call cs_put_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
+            xpred, du, merged=.true.)
+        else
+          call cs_put_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
+            xpred, du, merged=.true.)
+        end if
+        cs%g1(:, j) = g1col
+        do e = 1, nr
+          w%slot(w%rnode(e)) = 0
+        end do
       end if
       call corner_rows_after(c)
     end do
     cs%g1_band = band
   contains
+    !> Add weight ww of global node pp to the row being assembled.
+    subroutine put(pp, ww)
+      integer, intent(in) :: pp
+      real(wp), intent(in) :: ww
+      integer :: sl
+      sl = w%slot(pp)
+      if (sl > 0) then
+        w%rw(sl) = w%rw(sl) + ww
+        return
+      end if
+      if (nr == size(w%rnode)) call grow_row(w)
+      nr = nr + 1
+      w%rnode(nr) = pp
+      w%rw(nr) = ww
+      w%slot(pp) = nr
+    end subroutine put
+
     !> Chain position of the q-th node in constraint order: along the
     !> chain from cfirst, or folded (the chain's q-th node from the start
     !> for odd q, from the end for even q).
@@ -941,6 +975,18 @@ contains
       xs(:, a) = x(:, surf%seg(a, k))
     end do
   end subroutine load_segment
+
+  !> Double the row buffer of assemble_rows, keeping its entries.
+  subroutine grow_row(w)
+    type(mortar_work_t), intent(inout) :: w
+    integer :: cap
+    real(wp), allocatable :: tr(:)
+    cap = 2*size(w%rnode)
+    call grow_int(w%rnode, cap, size(w%rnode))
+    allocate(tr(cap))
+    tr(1:size(w%rw)) = w%rw
+    call move_alloc(tr, w%rw)
+  end subroutine grow_row
 
   !> Double the master-entry buffers, keeping the entries written so far.
   subroutine grow_entries(w)
