@@ -458,7 +458,15 @@ contains
       fp = tg(1)**2 + tg(2)**2 + (c(1)*c2(1) + c(2)*c2(2))
       if (fp <= 0.0_wp) fp = tg(1)**2 + tg(2)**2
       tn = max(0.0_wp, min(1.0_wp, t - f/max(fp, tiny(1.0_wp))))
-      if (abs(tn - t) <= 1.0e-14_wp) exit
+      if (abs(tn - t) <= 1.0e-14_wp) then
+        ! Converged: t is the root. The best iterate by distance is kept
+        ! only when t is clearly worse (another basin): near the root the
+        ! squared distances of the last iterates differ by less than their
+        ! round-off, and picking among them left the root up to 1e-8 off,
+        ! differently from a warm and a cold start.
+        if (c(1)**2 + c(2)**2 <= dbest*(1.0_wp + 1.0e-8_wp)) tbest = t
+        exit
+      end if
       t = tn
     end do
     ! The node weights, the point and the tangent at the root.

@@ -20,7 +20,14 @@ program test_nts_search
   use raccord_constraint_set, only: constraint_set_t
   use raccord_node_to_segment, only: smooth_foot, span_far, build_node_to_segment
   implicit none
+  integer :: nseed
+  integer, allocatable :: seed(:)
 
+  ! A fixed seed: the same geometry every run.
+  call random_seed(size=nseed)
+  allocate(seed(nseed))
+  seed = 20261127
+  call random_seed(put=seed)
   call run_tests('nts_search', [ &
     new_test('span_far: never passes a span that has a point within d; passes most far spans', test_span_far), &
     new_test('smooth_foot: the same foot with the skip as with all three spans (open, closed chains)', test_skip), &
@@ -55,7 +62,8 @@ contains
     surf%nen_seg = 2
     surf%nnode = nn
     surf%closed = closed
-    allocate(surf%seg(3, n), surf%node(nn), surf%corner(nn), surf%s0(nn), source=0)
+    allocate(surf%seg(3, n), surf%node(nn), surf%corner(nn), source=0)
+    allocate(surf%s0(nn))
     do k = 1, nn
       surf%node(k) = k
       surf%corner(k) = k
@@ -207,7 +215,8 @@ contains
       slave%nseg = ns - 1
       slave%nen_seg = 2
       slave%nnode = ns
-      allocate(slave%seg(3, ns - 1), slave%node(ns), slave%corner(ns), slave%s0(ns), source=0)
+      allocate(slave%seg(3, ns - 1), slave%node(ns), slave%corner(ns), source=0)
+      allocate(slave%s0(ns))
       do i = 1, ns
         slave%node(i) = nm + i
         slave%corner(i) = nm + i
