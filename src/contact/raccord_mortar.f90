@@ -98,6 +98,7 @@ module raccord_mortar
     integer :: nstep = 0
     integer, allocatable :: sstamp(:)         !< (nseg) last step snrm was taken at (2-node segments)
     real(wp), allocatable :: snrm(:,:)        !< (2, nseg) outward unit normal of each straight segment
+    integer, allocatable :: slist(:)          !< (nseg) scratch: the segments whose snrm is taken
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
@@ -155,6 +156,7 @@ contains
     allocate(w%mend(ns), w%stamp(nn), w%sstamp(ns), source=0)
     allocate(w%nlist(nn))
     allocate(w%snrm(2, ns), source=0.0_wp)
+    allocate(w%slist(ns))
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%cand(max(16, master%nseg)))
     ! Corner c of the master chain is master%corner(c); segment l runs from
@@ -890,10 +892,33 @@ contains
     real(wp), intent(in) :: x(:,:)
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, tn, t, kk, nl
+    integer :: k, a, c, tn, t, kk, nl, nsl
     real(wp) :: xs(2, 3)
     w%nstep = w%nstep + 1
     nl = 0
+    if (slave%nen_seg == 2) then
+      ! A straight segment has one normal, the same at both ends: taken
+      ! once per step for the segments at the nodes of the near ones, in
+      ! a loop of its own (their square roots and divisions overlap).
+      nsl = 0
+      do tn = 1, vl%nnear
+        k = vl%near(tn)
+        do a = 1, 2
+          c = w%pos(a, k)
+          do t = 1, w%nadj(c)
+            kk = w%adj_seg(t, c)
+            if (w%sstamp(kk) == w%nstep) cycle
+            w%sstamp(kk) = w%nstep
+            nsl = nsl + 1
+            w%slist(nsl) = kk
+          end do
+        end do
+      end do
+      do t = 1, nsl
+        kk = w%slist(t)
+        w%snrm(:, kk) = line_normal(x(:, slave%seg(1, kk)), x(:, slave%seg(2, kk)))
+      end do
+    end if
     do tn = 1, vl%nnear
       k = vl%near(tn)
       do a = 1, slave%nen_seg
@@ -906,13 +931,6 @@ contains
         do t = 1, w%nadj(c)
           kk = w%adj_seg(t, c)
           if (slave%nen_seg == 2) then
-            ! A straight segment has one normal, the same at both ends:
-            ! taken once per step (the two nodes of the segment share it).
-            if (w%sstamp(kk) /= w%nstep) then
-              w%sstamp(kk) = w%nstep
-              call load_segment(slave, x, kk, xs)
-              w%snrm(:, kk) = line_normal(xs(:, 1), xs(:, 2))
-            end if
             w%nrm(:, c) = w%nrm(:, c) + w%snrm(:, kk)
           else
             call load_segment(slave, x, kk, xs)
