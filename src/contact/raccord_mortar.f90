@@ -300,9 +300,10 @@ contains
       if (k > 1 .and. w%f_seg(c) == k - 1) then
         flo = w%f_end(c)
       else
-        flo = end_offset(xs(:, 1), nn(:, 1), pc)
+        ! end_offset written out (a call for one cross product)
+        flo = (pc(1) - xs(1, 1))*nn(2, 1) - (pc(2) - xs(2, 1))*nn(1, 1)
       end if
-      fhi = end_offset(xs(:, 2), nn(:, 2), pc)
+      fhi = (pc(1) - xs(1, 2))*nn(2, 2) - (pc(2) - xs(2, 2))*nn(1, 2)
       w%f_seg(c) = k
       w%f_end(c) = fhi
       xi = root_along_field(nen, xs, nn, pc, flo, fhi)
