@@ -324,7 +324,8 @@ contains
   !> four points in the frame of the chord (along it, across it), in
   !> coordinates scaled by the chord's length (no root, no division): the
   !> span is far when the box is farther from xp than dref plus a margin
-  !> for round-off (1e-9 of the chord and a few ulps of the coordinates),
+  !> for round-off (squared: 1e-9 of the chord's length squared, and a
+  !> few ulps of the coordinates),
   !> and a far span cannot give the closest point.
   pure logical function span_far(x, nd, xp, dref) result(far)
     real(wp), intent(in) :: x(:,:)
@@ -364,7 +365,8 @@ contains
     end do
     ds = max(smin, -smax, 0.0_wp)
     dr = max(rmin, -rmax, 0.0_wp)
-    ! |box distance| * len > (dref + tol) * len, squared; tol >= 1e-9 len.
+    ! Far: (box distance)^2 > (dref + tol)^2 + 1e-9 len^2, all times len^2
+    ! (ds, dr are scaled by len), with a relative 1e-12 more.
     tol = 64.0_wp*epsilon(1.0_wp)*(abs(xp(1)) + abs(xp(2)) + abs(xa(1)) + abs(xa(2)))
     far = len2 > 0.0_wp .and. ds**2 + dr**2 > ((dref + tol)**2 + 1.0e-9_wp*len2)*len2*(1.0_wp + 1.0e-12_wp)
   end function span_far
