@@ -44,7 +44,7 @@ module raccord_constraint_set
     real(wp), allocatable :: coord(:)         !< reference arc length of the node (for profiles)
   end type constraint_set_t
 
-  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row
 
 contains
 
@@ -69,14 +69,17 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: snode, gnode
     real(wp), intent(in) :: normal(2), length, coord
-    integer :: j
+    integer :: j, d
     cs%m = cs%m + 1
     j = cs%m
     cs%snode(j) = snode
     cs%gnode(j) = gnode
     cs%normal(:, j) = normal
     cs%tangent(:, j) = [normal(2), -normal(1)]
-    cs%g1(:, j) = 0.0_wp
+    ! (A loop of known length: the section was a call to memset per row.)
+    do d = -G1_MAX_BAND, G1_MAX_BAND
+      cs%g1(d, j) = 0.0_wp
+    end do
     cs%g1(0, j) = 1.0_wp
     cs%length(j) = length
     cs%coord(j) = coord
@@ -117,6 +120,62 @@ contains
       cs%slip_w(j) = cs%slip_w(j) + cs%ent_w(e)*dot_product(du(:, p), cs%tangent(:, j))
     end do
   end subroutine cs_finish_row
+
+  !> A whole row at once: cs_add_row, cs_add_entry for each (node(e),
+  !> w(e)) with w(e) /= 0 in order, and cs_finish_row, with the same sums
+  !> in the same order; a repeated node is merged by a search over this
+  !> row's entries only. With `merged` the entries are distinct already
+  !> (merged by the caller in the order cs_add_entry would have) and are
+  !> written as they are, zeros included.
+  subroutine cs_put_row(cs, snode, gnode, normal, length, coord, node, w, x, du, merged)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: snode, gnode
+    real(wp), intent(in) :: normal(2), length, coord
+    integer, intent(in) :: node(:)
+    real(wp), intent(in) :: w(:)
+    real(wp), intent(in) :: x(:,:), du(:,:)
+    logical, intent(in), optional :: merged
+    integer :: e, f, j, p, e0
+    real(wp) :: tangent(2), gap, slip
+    logical :: as_is
+    as_is = .false.
+    if (present(merged)) as_is = merged
+    call cs_add_row(cs, snode, gnode, normal, length, coord)
+    j = cs%m
+    if (cs%nent + size(node) > size(cs%ent_node)) call grow(cs, size(cs%snode), 2*size(cs%ent_node) + size(node))
+    e0 = cs%nent + 1
+    if (as_is) then
+      do e = 1, size(node)
+        cs%ent_node(cs%nent + e) = node(e)
+        cs%ent_w(cs%nent + e) = w(e)
+      end do
+      cs%nent = cs%nent + size(node)
+    else
+      entries: do e = 1, size(node)
+        if (w(e) == 0.0_wp) cycle
+        do f = e0, cs%nent
+          if (cs%ent_node(f) == node(e)) then
+            cs%ent_w(f) = cs%ent_w(f) + w(e)
+            cycle entries
+          end if
+        end do
+        cs%nent = cs%nent + 1
+        cs%ent_node(cs%nent) = node(e)
+        cs%ent_w(cs%nent) = w(e)
+      end do entries
+    end if
+    cs%row_ptr(j + 1) = cs%nent + 1
+    tangent = [normal(2), -normal(1)]
+    gap = 0.0_wp
+    slip = 0.0_wp
+    do e = e0, cs%nent
+      p = cs%ent_node(e)
+      gap = gap + cs%ent_w(e)*dot_product(x(:, p), normal)
+      slip = slip + cs%ent_w(e)*dot_product(du(:, p), tangent)
+    end do
+    cs%gap_w(j) = gap
+    cs%slip_w(j) = slip
+  end subroutine cs_put_row
 
   subroutine grow(cs, mcap, ecap)
     type(constraint_set_t), intent(inout) :: cs

@@ -461,9 +461,13 @@ contains
     h = velocity_step(state)
     ! The last step's forces off: fc, ft are zero off this step's nodes
     ! (account_shared_nodes relies on it).
+    ! (Component by component: the sections were two calls to memset per node.)
     do t = 1, pair%ntouched
-      pair%fc(:, pair%touched(t)) = 0.0_wp
-      pair%ft(:, pair%touched(t)) = 0.0_wp
+      p = pair%touched(t)
+      pair%fc(1, p) = 0.0_wp
+      pair%fc(2, p) = 0.0_wp
+      pair%ft(1, p) = 0.0_wp
+      pair%ft(2, p) = 0.0_wp
     end do
     nt = 0
     do j = 1, pair%cs%m
@@ -475,8 +479,10 @@ contains
           pair%mark(p) = .true.
           nt = nt + 1
           pair%touched(nt) = p
-          pair%fc(:, p) = 0.0_wp
-          pair%ft(:, p) = 0.0_wp
+          pair%fc(1, p) = 0.0_wp
+          pair%fc(2, p) = 0.0_wp
+          pair%ft(1, p) = 0.0_wp
+          pair%ft(2, p) = 0.0_wp
         end if
         pair%fc(:, p) = pair%fc(:, p) + pair%cs%ent_w(e)*fvec
         ! Frictionless: tau = 0 and ft stays 0 (its work below adds zeros).

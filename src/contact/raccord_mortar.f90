@@ -32,7 +32,8 @@ module raccord_mortar
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row, &
+    G1_MAX_BAND
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
     intersect_ray, multiplier_basis, multiplier_breaks
@@ -97,6 +98,7 @@ module raccord_mortar
     integer :: nstep = 0
     integer, allocatable :: sstamp(:)         !< (nseg) last step snrm was taken at (2-node segments)
     real(wp), allocatable :: snrm(:,:)        !< (2, nseg) outward unit normal of each straight segment
+    integer, allocatable :: slist(:)          !< (nseg) scratch: the segments whose snrm is taken
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
@@ -109,6 +111,12 @@ module raccord_mortar
     real(wp), allocatable :: xi_val(:)        !< projected slave parameter of the corner
     integer, allocatable :: f_seg(:)          !< (master ncorner) slave segment whose end f_end was taken at
     real(wp), allocatable :: f_end(:)         !< F of project_along_field at that segment's end node
+    ! The row being assembled (assemble_rows): its distinct nodes in the
+    ! order of first contribution, their summed weights, and each global
+    ! node's place in it (0: not in the row).
+    integer, allocatable :: slot(:)           !< (largest global node number of the pair)
+    integer, allocatable :: rnode(:)
+    real(wp), allocatable :: rw(:)
   end type mortar_work_t
 
   public :: init_mortar, build_mortar
@@ -148,6 +156,7 @@ contains
     allocate(w%mend(ns), w%stamp(nn), w%sstamp(ns), source=0)
     allocate(w%nlist(nn))
     allocate(w%snrm(2, ns), source=0.0_wp)
+    allocate(w%slist(ns))
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%cand(max(16, master%nseg)))
     ! Corner c of the master chain is master%corner(c); segment l runs from
@@ -160,6 +169,8 @@ contains
       if (master%closed .and. k == master%nseg) w%mcorner(2, k) = 1
     end do
     allocate(w%xi_seg(nc), w%f_seg(nc), source=0)
+    allocate(w%slot(max(maxval(slave%node), maxval(master%node))), source=0)
+    allocate(w%rnode(64), w%rw(64))
     allocate(w%xi_val(nc), w%f_end(nc), source=0.0_wp)
     ! Local node a of slave segment k sits at chain position stride*(k-1)+1
     ! (start), stride*k+1 (end), stride*(k-1)+2 (mid): the order of
@@ -212,8 +223,12 @@ contains
     call slave_normals(slave, x, v, w)
     do t = 1, v%nmnear
       l = v%mnear(t)
-      w%xi_seg(w%mcorner(:, l)) = 0
-      w%f_seg(w%mcorner(:, l)) = 0
+      ! (Element by element: a vector subscript on the left made gfortran
+      ! allocate a temporary here, twice per listed segment and step.)
+      w%xi_seg(w%mcorner(1, l)) = 0
+      w%xi_seg(w%mcorner(2, l)) = 0
+      w%f_seg(w%mcorner(1, l)) = 0
+      w%f_seg(w%mcorner(2, l)) = 0
     end do
     w%nment = 0
     slave_segments: do tn = 1, v%nnear
@@ -223,8 +238,7 @@ contains
       do a = 1, nen
         nn(:, a) = w%nrm(:, w%pos(a, k))
       end do
-      w%g1loc(:, :, k) = 0.0_wp
-      w%nmloc(:, :, k) = 0.0_wp
+      call clear_segment(w, k)
       lo = xs(:, 1)
       hi = xs(:, 1)
       do a = 2, nen
@@ -286,9 +300,10 @@ contains
       if (k > 1 .and. w%f_seg(c) == k - 1) then
         flo = w%f_end(c)
       else
-        flo = end_offset(xs(:, 1), nn(:, 1), pc)
+        ! end_offset written out (a call for one cross product)
+        flo = (pc(1) - xs(1, 1))*nn(2, 1) - (pc(2) - xs(2, 1))*nn(1, 1)
       end if
-      fhi = end_offset(xs(:, 2), nn(:, 2), pc)
+      fhi = (pc(1) - xs(1, 2))*nn(2, 2) - (pc(2) - xs(2, 2))*nn(1, 2)
       w%f_seg(c) = k
       w%f_end(c) = fhi
       xi = root_along_field(nen, xs, nn, pc, flo, fhi)
@@ -315,9 +330,9 @@ contains
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr
     logical :: fold
-    real(wp) :: v, tol
+    real(wp) :: v, tol, g1col(-G1_MAX_BAND:G1_MAX_BAND)
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
@@ -374,12 +389,11 @@ contains
       c = at(q)
       j = w%cidx(c)
       if (j > 0) then
-        if (w%weighted) then
-          call cs_add_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c))
-        else
-          call cs_add_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c))
-        end if
-        cs%g1(:, j) = 0.0_wp
+        ! The row's entries merged through w%slot in the order of their
+        ! first contribution, the weights summed in contribution order (as
+        ! cs_add_entry did with a search per entry), and written at once.
+        nr = 0
+        g1col = 0.0_wp
         do t = 1, w%nadj(c)
           k = w%adj_seg(t, c)
           b = w%adj_loc(t, c)
@@ -388,25 +402,52 @@ contains
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
             if (v == 0.0_wp) cycle
-            call cs_add_entry(cs, slave%seg(ai, k), -v)
+            call put(slave%seg(ai, k), -v)
             i = w%cidx(w%pos(ai, k))
             if (i > 0) then
               d = i - j
-              cs%g1(d, j) = cs%g1(d, j) + v
+              g1col(d) = g1col(d) + v
               band = max(band, abs(d))
             end if
           end do
           ! Master entries +G21(a, j).
           do e = w%mbeg(k), w%mend(k)
-            if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
+            if (w%ment_loc(e) == b) call put(w%ment_node(e), w%ment_w(e))
           end do
         end do
-        call cs_finish_row(cs, xpred, du)
+        if (w%weighted) then
+          call cs_put_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
+            xpred, du, merged=.true.)
+        else
+          call cs_put_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
+            xpred, du, merged=.true.)
+        end if
+        cs%g1(:, j) = g1col
+        do e = 1, nr
+          w%slot(w%rnode(e)) = 0
+        end do
       end if
       call corner_rows_after(c)
     end do
     cs%g1_band = band
   contains
+    !> Add weight ww of global node pp to the row being assembled.
+    subroutine put(pp, ww)
+      integer, intent(in) :: pp
+      real(wp), intent(in) :: ww
+      integer :: sl
+      sl = w%slot(pp)
+      if (sl > 0) then
+        w%rw(sl) = w%rw(sl) + ww
+        return
+      end if
+      if (nr == size(w%rnode)) call grow_row(w)
+      nr = nr + 1
+      w%rnode(nr) = pp
+      w%rw(nr) = ww
+      w%slot(pp) = nr
+    end subroutine put
+
     !> Chain position of the q-th node in constraint order: along the
     !> chain from cfirst, or folded (the chain's q-th node from the start
     !> for odd q, from the end for even q).
@@ -852,10 +893,33 @@ contains
     real(wp), intent(in) :: x(:,:)
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, tn, t, kk, nl
+    integer :: k, a, c, tn, t, kk, nl, nsl
     real(wp) :: xs(2, 3)
     w%nstep = w%nstep + 1
     nl = 0
+    if (slave%nen_seg == 2) then
+      ! A straight segment has one normal, the same at both ends: taken
+      ! once per step for the segments at the nodes of the near ones, in
+      ! a loop of its own (their square roots and divisions overlap).
+      nsl = 0
+      do tn = 1, vl%nnear
+        k = vl%near(tn)
+        do a = 1, 2
+          c = w%pos(a, k)
+          do t = 1, w%nadj(c)
+            kk = w%adj_seg(t, c)
+            if (w%sstamp(kk) == w%nstep) cycle
+            w%sstamp(kk) = w%nstep
+            nsl = nsl + 1
+            w%slist(nsl) = kk
+          end do
+        end do
+      end do
+      do t = 1, nsl
+        kk = w%slist(t)
+        w%snrm(:, kk) = line_normal(x(:, slave%seg(1, kk)), x(:, slave%seg(2, kk)))
+      end do
+    end if
     do tn = 1, vl%nnear
       k = vl%near(tn)
       do a = 1, slave%nen_seg
@@ -863,17 +927,11 @@ contains
         if (w%stamp(c) == w%nstep) cycle
         w%stamp(c) = w%nstep
         w%covered(c) = .false.
-        w%nrm(:, c) = 0.0_wp
+        w%nrm(1, c) = 0.0_wp
+        w%nrm(2, c) = 0.0_wp
         do t = 1, w%nadj(c)
           kk = w%adj_seg(t, c)
           if (slave%nen_seg == 2) then
-            ! A straight segment has one normal, the same at both ends:
-            ! taken once per step (the two nodes of the segment share it).
-            if (w%sstamp(kk) /= w%nstep) then
-              w%sstamp(kk) = w%nstep
-              call load_segment(slave, x, kk, xs)
-              w%snrm(:, kk) = line_normal(xs(:, 1), xs(:, 2))
-            end if
             w%nrm(:, c) = w%nrm(:, c) + w%snrm(:, kk)
           else
             call load_segment(slave, x, kk, xs)
@@ -909,6 +967,22 @@ contains
     n = [t(2), -t(1)]/max(sqrt(t(1)**2 + t(2)**2), tiny(1.0_wp))
   end function line_normal
 
+  !> Zero slave segment k's integrals (g1loc, nmloc) with stores written
+  !> out: the array sections were a call to memset each, per near segment
+  !> and step.
+  subroutine clear_segment(w, k)
+    type(mortar_work_t), intent(inout) :: w
+    integer, intent(in) :: k
+    integer :: a
+    do a = 1, 3
+      w%g1loc(1, a, k) = 0.0_wp
+      w%g1loc(2, a, k) = 0.0_wp
+      w%g1loc(3, a, k) = 0.0_wp
+      w%nmloc(1, a, k) = 0.0_wp
+      w%nmloc(2, a, k) = 0.0_wp
+    end do
+  end subroutine clear_segment
+
   subroutine load_segment(surf, x, k, xs)
     type(contact_surface_t), intent(in) :: surf
     real(wp), intent(in) :: x(:,:)
@@ -920,6 +994,18 @@ contains
       xs(:, a) = x(:, surf%seg(a, k))
     end do
   end subroutine load_segment
+
+  !> Double the row buffer of assemble_rows, keeping its entries.
+  subroutine grow_row(w)
+    type(mortar_work_t), intent(inout) :: w
+    integer :: cap
+    real(wp), allocatable :: tr(:)
+    cap = 2*size(w%rnode)
+    call grow_int(w%rnode, cap, size(w%rnode))
+    allocate(tr(cap))
+    tr(1:size(w%rw)) = w%rw
+    call move_alloc(tr, w%rw)
+  end subroutine grow_row
 
   !> Double the master-entry buffers, keeping the entries written so far.
   subroutine grow_entries(w)

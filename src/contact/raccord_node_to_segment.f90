@@ -26,13 +26,13 @@ module raccord_node_to_segment
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row
   use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
   use raccord_mortar_segments, only: outward_normal, normal_field, project_along_field, cross2, NODE_XI
   implicit none
   private
 
-  public :: build_node_to_segment, tributary_lengths, smooth_foot
+  public :: build_node_to_segment, tributary_lengths, smooth_foot, span_far
 
   !> Turning angle (radians, as a sine) below which the end segment of an
   !> open master chain is read as straight (smooth_foot): there the cubic
@@ -59,8 +59,8 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     integer :: i, p, q, k, best, nen, a, tn, ncand
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, n_m(2), g, sh(3), dsh(3)
-    real(wp) :: nn(2, 3), dnf(2), sw(4)
-    integer :: k2, sn(4), t0, gap, tt
+    real(wp) :: nn(2, 3), dnf(2), sw(4), xa(2), xb(2), chord(2), bx, by, margin
+    integer :: k2, sn(4), t0, gap, tt, q0, qq
     logical :: fold
     ! A foot up to 1 % of a segment beyond the end of the master chain still
     ! counts: a slave node that sits at the master's end (a common corner)
@@ -70,7 +70,9 @@ contains
 
     nen = master%nen_seg
     call verlet_refresh(v, x, slave, master, reach)
-    call master_normals(master, x, v, nodal_normal)
+    ! The nodal normals serve the 3-node segments' normal field only (the
+    ! smoothed master of 2-node segments takes its own tangent).
+    if (nen /= 2) call master_normals(master, x, v, nodal_normal)
     call tributary_lengths(slave, x, trib, v%snear(1:v%nsnear))
     call cs_start(cs, slave%nnode)
     ! On a closed slave loop, start after the widest gap between near nodes
@@ -100,6 +102,56 @@ contains
       best = 0
       best_dist = huge(1.0_wp)
       call verlet_candidates(v, i, xp, xp, cand, ncand)
+      if (nen == 2) then
+        margin = 64.0_wp*epsilon(1.0_wp)*(abs(xp(1)) + abs(xp(2)))
+        ! Straight segments: project_on_segment and segment_point written
+        ! out (the same sums; no calls per candidate).
+        ! The last step's closest segment first (when it is a candidate):
+        ! a candidate whose box is farther than the best distance so far
+        ! cannot be closer and is passed; ties go to the earlier candidate
+        ! (ascending), as in a pass in list order.
+        q0 = 0
+        do q = 1, ncand
+          if (cand(q) == v%warm_seg(i)) q0 = q
+        end do
+        do qq = 0, ncand
+          q = qq
+          if (qq == 0) q = q0
+          if (q == 0 .or. (qq > 0 .and. qq == q0)) cycle
+          k = cand(q)
+          xa = x(:, master%seg(1, k))
+          xb = x(:, master%seg(2, k))
+          if (best > 0) then
+            bx = max(min(xa(1), xb(1)) - xp(1), xp(1) - max(xa(1), xb(1)), 0.0_wp)
+            by = max(min(xa(2), xb(2)) - xp(2), xp(2) - max(xa(2), xb(2)), 0.0_wp)
+            if (bx**2 + by**2 > (best_dist*(1.0_wp + 1.0e-12_wp) + margin)**2) cycle
+          end if
+          chord = xb - xa
+          s = -1.0_wp + 2.0_wp*dot_product(xp - xa, chord)/max(dot_product(chord, chord), tiny(1.0_wp))
+          if (abs(s) > 1.0_wp + eps) then
+            if (s > 1.0_wp + end_tol .and. k == master%nseg .and. .not. master%closed) cycle
+            if (s < -1.0_wp - end_tol .and. k == 1 .and. .not. master%closed) cycle
+            s = max(-1.0_wp, min(1.0_wp, s))
+          end if
+          foot = xa*(0.5_wp*(1.0_wp - s)) + xb*(0.5_wp*(1.0_wp + s))
+          dist = sqrt((xp(1) - foot(1))**2 + (xp(2) - foot(2))**2)
+          if (dist < best_dist .or. (dist == best_dist .and. k < best)) then
+            best_dist = dist
+            best = k
+          end if
+        end do
+        if (best == 0) cycle near_nodes
+        ! The foot on the smoothed master (see smooth_foot). Warm start:
+        ! the node's feet of the last step on the same spans.
+        if (v%warm_seg(i) /= best) v%warm_t(:, i) = -1.0_wp
+        v%warm_seg(i) = best
+        call smooth_foot(master, x, best, xp, sn, sw, n_m, v%warm_t(:, i))
+        g = dot_product(xpred(:, p) - (sw(1)*xpred(:, sn(1)) + sw(2)*xpred(:, sn(2)) + sw(3)*xpred(:, sn(3)) + &
+          sw(4)*xpred(:, sn(4))), n_m)
+        if (g > reach .or. g < -reach) cycle near_nodes
+        call cs_put_row(cs, i, p, -n_m, trib(i), slave%s0(i), [p, sn], [-1.0_wp, sw], xpred, du)
+        cycle near_nodes
+      end if
       do q = 1, ncand
         k = cand(q)
         call load_segment(master, x, k, xs)
@@ -125,23 +177,6 @@ contains
         end if
       end do
       if (best == 0) cycle near_nodes
-      if (nen == 2) then
-        ! Straight segments: the foot on the smoothed master (see smooth_foot).
-        ! Warm start: the node's feet of the last step on the same spans.
-        if (v%warm_seg(i) /= best) v%warm_t(:, i) = -1.0_wp
-        v%warm_seg(i) = best
-        call smooth_foot(master, x, best, xp, sn, sw, n_m, v%warm_t(:, i))
-        g = dot_product(xpred(:, p) - (sw(1)*xpred(:, sn(1)) + sw(2)*xpred(:, sn(2)) + sw(3)*xpred(:, sn(3)) + &
-          sw(4)*xpred(:, sn(4))), n_m)
-        if (g > reach .or. g < -reach) cycle near_nodes
-        call cs_add_row(cs, i, p, -n_m, trib(i), slave%s0(i))
-        call cs_add_entry(cs, p, -1.0_wp)
-        do a = 1, 4
-          if (sw(a) /= 0.0_wp) call cs_add_entry(cs, sn(a), sw(a))
-        end do
-        call cs_finish_row(cs, xpred, du)
-        cycle near_nodes
-      end if
       ! Foot and normal from the continuous normal field of the closest
       ! segment; past its end, the neighbour's field takes over.
       k = best
@@ -227,7 +262,7 @@ contains
   !> k, -1 for none) each span's Newton starts there instead of at the
   !> chord projection, and warm returns this call's: the root is the same,
   !> reached in one or two iterations (doc/theory-contact.md, section 4).
-  subroutine smooth_foot(master, x, k, xp, nodes, w, normal, warm)
+  subroutine smooth_foot(master, x, k, xp, nodes, w, normal, warm, full)
     type(contact_surface_t), intent(in) :: master
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: k
@@ -235,32 +270,106 @@ contains
     integer, intent(out) :: nodes(4)
     real(wp), intent(out) :: w(4), normal(2)
     real(wp), intent(inout), optional :: warm(3)
-    integer :: kk, c, nd(4)
-    real(wp) :: d, best_d, wt(4), tg(2)
+    logical, intent(in), optional :: full   !< evaluate all three spans (tests: the skip changes nothing)
+    integer :: kk, c, i, nd(4)
+    real(wp) :: d, best_d, wt(4), tg(2), tbest(2)
+    logical :: skip
+    ! Span k first, then k - 1 and k + 1: a neighbour that lies farther
+    ! than the distance found so far (span_far) cannot be closer and is
+    ! not evaluated (doc/theory-contact.md, section 5, "Smoothed
+    ! master"). Ties go to the span earlier along the chain, as when the
+    ! three were taken in chain order: k - 1 wins a tie with k, k + 1 none.
+    skip = .true.
+    if (present(full)) skip = .not. full
     best_d = huge(1.0_wp)
     nodes = master%seg(1, k)
     w = [0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp]
-    normal = 0.0_wp
-    do c = -1, 1
+    tbest = 0.0_wp
+    do i = 1, 3
+      c = merge(0, merge(-1, 1, i == 2), i == 1)
       kk = neighbour_segment(master, k, c)
       if (kk == 0) cycle
       nd = [neighbour_segment(master, kk, -1), master%seg(1, kk), master%seg(2, kk), neighbour_segment(master, kk, 1)]
       if (nd(1) > 0) nd(1) = master%seg(1, nd(1))
       if (nd(4) > 0) nd(4) = master%seg(2, nd(4))
+      if (skip .and. c /= 0) then
+        if (span_far(x, nd, xp, best_d)) then
+          ! Not evaluated: its Newton starts cold when it is next.
+          if (present(warm)) warm(c + 2) = -1.0_wp
+          cycle
+        end if
+      end if
       if (present(warm)) then
         call span_closest(x, nd, xp, d, wt, tg, warm(c + 2))
       else
         call span_closest(x, nd, xp, d, wt, tg)
       end if
-      if (d < best_d) then
+      if (d < best_d .or. (c == -1 .and. d == best_d)) then
         best_d = d
         nodes = nd
         w = wt
-        normal = [tg(2), -tg(1)]/max(norm2(tg), tiny(1.0_wp))
+        tbest = tg
       end if
     end do
+    normal = [tbest(2), -tbest(1)]/max(norm2(tbest), tiny(1.0_wp))
     where (nodes == 0) nodes = master%seg(1, k)
   end subroutine smooth_foot
+
+  !> Is every point of the Hermite span of nodes nd = (P, A, B, N), as
+  !> span_closest reads it (P or N 0: reflected), farther from xp than
+  !> dref? In Bezier form the span's control points are A, A + T_A/3,
+  !> B - T_B/3, B (T_A = (B - P)/2, T_B = (N - A)/2), and the curve lies
+  !> in their convex hull; so do the chord AB and any blend of the two
+  !> (span_closest's end segments). The test takes the box that holds the
+  !> four points in the frame of the chord (along it, across it), in
+  !> coordinates scaled by the chord's length (no root, no division): the
+  !> span is far when the box is farther from xp than dref plus a margin
+  !> for round-off (squared: 1e-9 of the chord's length squared, and a
+  !> few ulps of the coordinates),
+  !> and a far span cannot give the closest point.
+  pure logical function span_far(x, nd, xp, dref) result(far)
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: nd(4)
+    real(wp), intent(in) :: xp(2), dref
+    real(wp) :: xa(2), xb(2), xq(2), xn(2), b(2, 4), e(2), len2, s, r, smin, smax, rmin, rmax, ds, dr, tol
+    integer :: i
+    xa = x(:, nd(2))
+    xb = x(:, nd(3))
+    if (nd(1) > 0) then
+      xq = x(:, nd(1))
+    else
+      xq = 2.0_wp*xa - xb
+    end if
+    if (nd(4) > 0) then
+      xn = x(:, nd(4))
+    else
+      xn = 2.0_wp*xb - xa
+    end if
+    b(:, 1) = xa - xp
+    b(:, 2) = xa + (xb - xq)/6.0_wp - xp
+    b(:, 3) = xb - (xn - xa)/6.0_wp - xp
+    b(:, 4) = xb - xp
+    e = xb - xa
+    len2 = e(1)**2 + e(2)**2
+    smin = huge(1.0_wp)
+    smax = -huge(1.0_wp)
+    rmin = huge(1.0_wp)
+    rmax = -huge(1.0_wp)
+    do i = 1, 4
+      s = b(1, i)*e(1) + b(2, i)*e(2)
+      r = b(2, i)*e(1) - b(1, i)*e(2)
+      smin = min(smin, s)
+      smax = max(smax, s)
+      rmin = min(rmin, r)
+      rmax = max(rmax, r)
+    end do
+    ds = max(smin, -smax, 0.0_wp)
+    dr = max(rmin, -rmax, 0.0_wp)
+    ! Far: (box distance)^2 > (dref + tol)^2 + 1e-9 len^2, all times len^2
+    ! (ds, dr are scaled by len), with a relative 1e-12 more.
+    tol = 64.0_wp*epsilon(1.0_wp)*(abs(xp(1)) + abs(xp(2)) + abs(xa(1)) + abs(xa(2)))
+    far = len2 > 0.0_wp .and. ds**2 + dr**2 > ((dref + tol)**2 + 1.0e-9_wp*len2)*len2*(1.0_wp + 1.0e-12_wp)
+  end function span_far
 
   !> Segment c = -1 (before), 0 (itself) or +1 (after) segment k along
   !> the master chain; 0 past the end of an open chain.
@@ -285,7 +394,8 @@ contains
     real(wp), intent(in) :: xp(2)
     real(wp), intent(out) :: d, w(4), tg(2)
     real(wp), intent(inout), optional :: warm   !< start parameter (none if outside [0, 1]); returns the foot's
-    real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), d2w(4), phi, turn
+    real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), phi, turn
+    real(wp) :: ta(2), tb(2), p1(2), p2(2), p3(2), q0(2)
     integer :: it
     xa = x(:, nd(2))
     xb = x(:, nd(3))
@@ -299,7 +409,6 @@ contains
     else
       xn = 2.0_wp*xb - xa
     end if
-    len = norm2(xb - xa)
     ba = 0.5_wp
     bb = 0.5_wp
     ! The end segment of an open chain: how much the piece turns (the sines
@@ -310,45 +419,63 @@ contains
     ! bending master crosses the threshold. Elsewhere always the cubic.
     phi = 1.0_wp
     if (nd(1) == 0 .or. nd(4) == 0) then
+      len = norm2(xb - xa)
       turn = max(abs(cross2(xb - xq, xb - xa))/max(norm2(xb - xq)*len, tiny(1.0_wp)), &
         abs(cross2(xn - xa, xb - xa))/max(norm2(xn - xa)*len, tiny(1.0_wp)))
       phi = max(0.0_wp, min(1.0_wp, (turn - 0.1_wp*END_TURN)/(0.9_wp*END_TURN)))
       phi = phi*phi*(3.0_wp - 2.0_wp*phi)
     end if
     ! Start from the projection on the chord.
-    t = dot_product(xp - xa, xb - xa)/max(len*len, tiny(1.0_wp))
-    t = max(0.0_wp, min(1.0_wp, t))
-    if (present(warm)) then
-      if (warm >= 0.0_wp .and. warm <= 1.0_wp) t = warm
+    t = -1.0_wp
+    if (present(warm)) t = warm
+    if (.not. (t >= 0.0_wp .and. t <= 1.0_wp)) then
+      t = dot_product(xp - xa, xb - xa)/max((xb(1) - xa(1))**2 + (xb(2) - xa(2))**2, tiny(1.0_wp))
+      t = max(0.0_wp, min(1.0_wp, t))
     end if
+    ! The iteration on the span's power form C(t) = p0 + t (p1 + t (p2 +
+    ! t p3)) (the same curve: Hermite basis with the tangents above, blended
+    ! with the chord), a quarter of the operations of the nodal weights per
+    ! iterate; the weights are taken once, at the root (a round-off
+    ! difference in the root from iterating on the weights, as the warm
+    ! start's).
+    ta = ba*(xb - xq)
+    tb = bb*(xn - xa)
+    p1 = phi*ta + (1.0_wp - phi)*(xb - xa)
+    p2 = phi*(3.0_wp*(xb - xa) - 2.0_wp*ta - tb)
+    p3 = phi*(2.0_wp*(xa - xb) + ta + tb)
+    q0 = xa - xp
     dbest = huge(1.0_wp)
     tbest = t
     ! Distances compared squared in the iteration (norm2 is a scaled loop
     ! with divisions, a third of the node-to-segment matching).
     do it = 1, 30
-      call weights(t)
-      c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
+      c = q0 + t*(p1 + t*(p2 + t*p3))
       if (c(1)**2 + c(2)**2 < dbest) then
         dbest = c(1)**2 + c(2)**2
         tbest = t
       end if
-      tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
-      c2 = d2w(1)*xq + d2w(2)*xa + d2w(3)*xb + d2w(4)*xn
-      f = dot_product(c, tg)
-      fp = dot_product(tg, tg) + dot_product(c, c2)
-      if (fp <= 0.0_wp) fp = dot_product(tg, tg)
+      tg = p1 + t*(2.0_wp*p2 + 3.0_wp*t*p3)
+      c2 = 2.0_wp*p2 + 6.0_wp*t*p3
+      f = c(1)*tg(1) + c(2)*tg(2)
+      fp = tg(1)**2 + tg(2)**2 + (c(1)*c2(1) + c(2)*c2(2))
+      if (fp <= 0.0_wp) fp = tg(1)**2 + tg(2)**2
       tn = max(0.0_wp, min(1.0_wp, t - f/max(fp, tiny(1.0_wp))))
-      if (abs(tn - t) <= 1.0e-14_wp) exit
+      if (abs(tn - t) <= 1.0e-14_wp) then
+        ! Converged: t is the root. The best iterate by distance is kept
+        ! only when t is clearly worse (another basin): near the root the
+        ! squared distances of the last iterates differ by less than their
+        ! round-off, and picking among them left the root up to 1e-8 off,
+        ! differently from a warm and a cold start.
+        if (c(1)**2 + c(2)**2 <= dbest*(1.0_wp + 1.0e-8_wp)) tbest = t
+        exit
+      end if
       t = tn
     end do
-    ! w, dw, c and tg are still those of tbest when the iteration stopped
-    ! at it (the usual case): not evaluated again.
-    if (it > 30 .or. t /= tbest) then
-      t = tbest
-      call weights(t)
-      c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
-      tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
-    end if
+    ! The node weights, the point and the tangent at the root.
+    t = tbest
+    call weights(t)
+    c = w(1)*xq + w(2)*xa + w(3)*xb + w(4)*xn - xp
+    tg = dw(1)*xq + dw(2)*xa + dw(3)*xb + dw(4)*xn
     if (present(warm)) warm = t
     d = norm2(c)
     ! A reflected node moves its weight to its neighbours (2 w to the end, -w to the other).
@@ -363,7 +490,7 @@ contains
       w(4) = 0.0_wp
     end if
   contains
-    !> Node weights of C(t), C'(t), C''(t) (Hermite basis with the tangents above).
+    !> Node weights of C(t) and C'(t) (Hermite basis with the tangents above).
     subroutine weights(tt)
       real(wp), intent(in) :: tt
       real(wp) :: h00, h10, h01, h11
@@ -377,15 +504,9 @@ contains
       h01 = -h00
       h11 = 3.0_wp*tt**2 - 2.0_wp*tt
       dw = [-ba*h10, h00 - bb*h11, h01 + ba*h10, bb*h11]
-      h00 = 12.0_wp*tt - 6.0_wp
-      h10 = 6.0_wp*tt - 4.0_wp
-      h01 = -h00
-      h11 = 6.0_wp*tt - 2.0_wp
-      d2w = [-ba*h10, h00 - bb*h11, h01 + ba*h10, bb*h11]
       ! Blend with the segment: C = (1 - phi) chord + phi cubic.
       w = phi*w + (1.0_wp - phi)*[0.0_wp, 1.0_wp - tt, tt, 0.0_wp]
       dw = phi*dw + (1.0_wp - phi)*[0.0_wp, -1.0_wp, 1.0_wp, 0.0_wp]
-      d2w = phi*d2w
     end subroutine weights
   end subroutine span_closest
 
@@ -404,7 +525,8 @@ contains
     do t = 1, v%nmdil
       k = v%mdil(t)
       do a = 1, master%nen_seg
-        nodal_normal(:, master%seg(a, k)) = 0.0_wp
+        nodal_normal(1, master%seg(a, k)) = 0.0_wp
+        nodal_normal(2, master%seg(a, k)) = 0.0_wp
       end do
     end do
     do t = 1, v%nmdil
@@ -420,8 +542,11 @@ contains
         cycle
       end if
       do a = 1, master%nen_seg
-        nodal_normal(:, master%seg(a, k)) = nodal_normal(:, master%seg(a, k)) + &
-          outward_normal(master%nen_seg, xs, NODE_XI(a))
+        ! (Through tn: the sum with the function result in one statement
+        ! made gfortran allocate a temporary.)
+        tn = outward_normal(master%nen_seg, xs, NODE_XI(a))
+        nodal_normal(1, master%seg(a, k)) = nodal_normal(1, master%seg(a, k)) + tn(1)
+        nodal_normal(2, master%seg(a, k)) = nodal_normal(2, master%seg(a, k)) + tn(2)
       end do
     end do
     ! Normalise each node once: the end and mid nodes of every segment, and
