@@ -29,6 +29,7 @@ program raccord_main
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
   use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
+  use raccord_state_guard, only: prediction_finite
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
@@ -164,6 +165,11 @@ program raccord_main
       if (err%failed()) call finish(err)
     end if
     call predict_motion(model, state)        ! (CD-1), (CD-2): v(n+1/2), u*(n+1); reactions
+    ! A non-finite prediction stops before the contact search sizes its
+    ! bins from it (raccord_state_guard).
+    if (size(pairs) > 0) then
+      if (.not. prediction_finite(state)) call stop_non_finite('non-finite predicted displacement')
+    end if
     ! Forward increment: the multipliers lambda(n) make the contact and
     ! friction conditions (paper eq. 19) hold at t(n+1); u(n+1) and v(n+1/2)
     ! are corrected. A scene without contact pairs skips it.
@@ -333,9 +339,16 @@ contains
   !> NaN/Inf guard: the energies sum over every node, so a non-finite value
   !> anywhere shows in them. Stop with the step, time and worst node.
   subroutine guard_finite()
+    if (ieee_is_finite(state%energy%kinetic) .and. ieee_is_finite(state%energy%internal)) return
+    call stop_non_finite('non-finite energy')
+  end subroutine guard_finite
+
+  !> Stop with exit 3: `what` at the step and time, and the first
+  !> non-finite (or fastest) node.
+  subroutine stop_non_finite(what)
+    character(len=*), intent(in) :: what
     integer :: i, worst
     real(wp) :: vmax
-    if (ieee_is_finite(state%energy%kinetic) .and. ieee_is_finite(state%energy%internal)) return
     worst = 0
     vmax = -1.0_wp
     do i = 1, model%nnode
@@ -348,11 +361,11 @@ contains
         worst = i
       end if
     end do
-    call raise_error(err, EXIT_NUMERIC, 'non-finite energy at step ' // str(state%step) // ', t = ' // &
+    call raise_error(err, EXIT_NUMERIC, what // ' at step ' // str(state%step) // ', t = ' // &
       str(state%time) // '; first non-finite (or fastest) node: ' // str(mesh%node_id(max(1, worst))) // &
       '. The run is unstable: reduce &time safety or dt, check the material data and loads.')
     call finish(err)
-  end subroutine guard_finite
+  end subroutine stop_non_finite
 
   !> raccord --verify FILE: check the file, print what was checked, exit
   !> 0 (intact) or with the error (2: damaged).

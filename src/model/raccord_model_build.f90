@@ -222,7 +222,8 @@ contains
     nfree = count(elem_body == 0)
     if (nfree > 0) call log_warn('build_model', str(nfree) // ' mesh elements belong to no &body and are ignored')
     ! &time mass_scaling_dt / mass_scaling_factor: scaled masses and bounds
-    call apply_mass_scaling(scene, model)
+    call apply_mass_scaling(scene, model, err)
+    if (err%failed()) return
     allocate(model%minv(mesh%nnode), source=0.0_wp)
     where (model%mass > 0.0_wp) model%minv = 1.0_wp/model%mass
     ! Nodes of finite-strain and j2 bodies: their stored energy replaces
@@ -600,5 +601,10 @@ contains
     end select
     s = trim(adjustl(s))
     if (len(s) == 0) s = '(none)'
+    ! The Gmsh reader names a physical group that $PhysicalNames does not
+    ! name by its tag: say so, or "5, 6" reads like a mistake of raccord's.
+    if (verify(s, '0123456789, ') == 0 .and. s /= '(none)') s = s // ' (numbers: Gmsh physical groups ' // &
+      'without a name in $PhysicalNames; name them in the .geo, e.g. Physical Surface("plate") = {1};, ' // &
+      'or write the number in the deck)'
   end function set_names
 end module raccord_model_build
