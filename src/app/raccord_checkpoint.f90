@@ -504,9 +504,11 @@ contains
     character(len=*), intent(in) :: a, b
     character(len=:), allocatable :: s
     integer :: ia, ib, ea, eb
+    character(len=:), allocatable :: group, la, lb
     character(len=1), parameter :: nl = new_line('a')
     ia = 1
     ib = 1
+    group = ''
     do
       ea = next_end(a, ia)
       eb = next_end(b, ib)
@@ -515,11 +517,25 @@ contains
         return
       end if
       if (a(ia:ea) /= b(ib:eb)) exit
+      la = trim(adjustl(a(ia:ea)))
+      if (len(la) > 0) then
+        if (la(1:1) == '&') group = la
+      end if
       ia = ea + 2
       ib = eb + 2
     end do
-    s = 'first difference: the checkpoint has "' // trim(adjustl(a(ia:ea))) // '", the scene "' // &
-      trim(adjustl(b(ib:eb))) // '"'
+    la = trim(adjustl(a(ia:ea)))
+    lb = trim(adjustl(b(ib:eb)))
+    ! A key that one echo has and the other not (the mass-scaling keys are
+    ! echoed only when given) meets the other's group end "/".
+    if (la == '/') then
+      s = 'first difference: the scene has "' // lb // '", which the checkpoint''s scene has not'
+    else if (lb == '/') then
+      s = 'first difference: the checkpoint''s scene has "' // la // '", which the scene has not'
+    else
+      s = 'first difference: the checkpoint has "' // la // '", the scene "' // lb // '"'
+    end if
+    if (len(group) > 0 .and. la(1:min(1, len(la))) /= '&') s = s // ' (in ' // group // ')'
   contains
     pure integer function next_end(t, i0) result(e)
       character(len=*), intent(in) :: t

@@ -684,6 +684,7 @@ contains
       read(record, nml=contact_pair, iostat=ios, iomsg=msg)
     end do
     label = trim(slave) // '/' // trim(master)
+    if (len_trim(slave) == 0 .and. len_trim(master) == 0) label = ''   ! not '/'
     call check_keys(deck, blk, CONTACT_KEYS, label, err)
     if (err%failed()) return
     do k = 1, size(blk%keys)

@@ -171,7 +171,10 @@ fkey neohooke finite finite.nml material "'neohooke'" "material"
 fkey vol-reduced finite finite.nml volumetric "'reduced'" "volumetric"
 fkey linear finite finite.nml material "'linear_elastic'" "kinematics"
 fkey small-neo finite finite.nml kinematics "'small'" "material"
-fkey svk-mean finite finite.nml material "'svk', volumetric = 'mean_dilatation'" "volumetric"
+fcase finite.finite.nml.svk-mean finite bad 2 finite.nml "the lower block svk with mean dilatation"
+set_key "$fdeck" material "'svk'"
+set_key "$fdeck" volumetric "'mean_dilatation'"
+set_names volumetric
 fkey plane-stress finite finite.nml hypothesis "'plane_stress'" "hypothesis" 1 body
 fkey j2-stress finite finite.nml hypothesis "'plane_stress'" "hypothesis" 2 body
 fcase finite.finite.nml.vol-small finite bad 2 finite.nml "volumetric = 'full' on a small-strain elastic body"
@@ -468,11 +471,11 @@ gp_case no-physnames-41 contact.msh "the \$PhysicalNames section removed (4.1)" 
   '$0 == "$PhysicalNames" { skip = 1 } skip { if ($0 == "$EndPhysicalNames") skip = 0; next } { print }'
 gp_case body-group-missing loop.msh "the physical surface 'pin' renamed 'pin_body'" "pin" \
   '$0 == "2 6 \"pin\"" { $0 = "2 6 \"pin_body\"" } { print }'
-gp_case body-is-curve loop.msh "the name 'pin' given to the curve group of tag 3 (dimension 1)" "pin" \
+gp_case body-is-curve loop.msh "the name 'pin' given to the curve group of tag 3 (dimension 1)" "not an element set" \
   '$0 == "2 6 \"pin\"" { $0 = "2 6 \"pin_body\"" } $0 == "1 3 \"pin_surface\"" { $0 = "1 3 \"pin\"" } { print }'
 gp_case name-twice loop.msh "the name 'hole' on the curve group and on the plate's surface group" "hole" \
   '$0 == "2 5 \"plate\"" { $0 = "2 5 \"hole\"" } { print }'
-gp_case tag-unnamed loop.msh "the plate's quads under the physical tag 9, which has no name" "plate" \
+gp_case tag-unnamed loop.msh "the plate's quads under the physical tag 9, which has no name" "without a name" \
   '$1 >= 26 && $1 <= 33 && $2 == 3 { $4 = 9 } { print }'
 gp_case tag-zero loop.msh "the pin's quads in no physical group (tag 0)" "pin" \
   '$1 >= 34 && $2 == 3 { $4 = 0 } { print }'
@@ -480,12 +483,19 @@ gp_case elements-in-two-bodies loop.msh "one quad of the pin put in the plate's 
   '$1 == 34 && $2 == 3 { $4 = 5 } { print }'
 gp_case point-as-body loop.msh "the point group pin_center named as the pin's elset" "" \
   '$0 == "0 4 \"pin_center\"" { $0 = "0 4 \"pin\"" } $0 == "2 6 \"pin\"" { $0 = "2 6 \"pin_x\"" } { print }'
-gp_case physname-dim-3 loop.msh "a physical name of dimension 3" "" \
+gp_case physname-dim-3 loop.msh "a physical name of dimension 3" "dimension 3" \
   '$0 == "2 6 \"pin\"" { $0 = "3 6 \"pin\"" } { print }'
-gp_case physname-unquoted loop.msh "a physical name without quotes" "" \
+gp_case physname-unquoted loop.msh "a physical name without quotes" "double quotes" \
   '$0 == "1 2 \"hole\"" { $0 = "1 2 hole" } { print }'
-gp_case physname-empty loop.msh "a physical name \"\"" "" \
+gp_case physname-empty loop.msh "a physical name \"\"" "empty" \
   '$0 == "1 2 \"hole\"" { $0 = "1 2 \"\"" } { print }'
+gp_case name-twice-same-dim loop.msh "the name 'hole' given to the curve groups 2 and 1" "two physical groups" \
+  '$0 == "1 1 \"plate_edge\"" { $0 = "1 1 \"hole\"" } { print }'
+gp_case tag-named-twice loop.msh "the curve group 2 named twice" "second time" \
+  '$0 == "6" { $0 = 7 } { print } $0 == "1 2 \"hole\"" { print "1 2 \"hole2\"" }'
+fcase gmshphys.loop.nml.bc-on-elset gmshphys bad 2 loop.nml "a fixed boundary on the element set 'plate'"
+echo "&boundary set = 'plate', type = 'fixed', components = 'x' /" >> "$fdeck"
+set_names "is an element set"
 gp_case set-is-body contact.msh "the boundary set lower_bottom renamed; the deck still names it" "lower_bottom" \
   '{ gsub(/"lower_bottom"/, "\"lower_base\""); print }'
 gp_case q8-no-physnames plate_q8.msh "the \$PhysicalNames section removed (2.2, Q8)" "PhysicalNames" \
@@ -516,8 +526,28 @@ cp "$fdeck" "$c/next.nml"; add_to_group "$c/next.nml" body "thickness = 3.0"
 sed -i 's/^kind=bad/kind=maybe/' "$c/case.txt"
 rs_case mscale loop.nml bad 2 deck "loop.nml stopped, then restarted with mass scaling"
 cp "$fdeck" "$c/next.nml"; add_to_group "$c/next.nml" time "mass_scaling_factor = 2.0"
+set_names mass_scaling
 rs_case output loop.nml valid 0 deck "loop.nml stopped, then restarted with another checkpoint_every (allowed)"
 cp "$fdeck" "$c/next.nml"; printf '&run checkpoint_every = 1000 /\n' >> "$c/next.nml"
+
+# Damaged checkpoints of these runs (their plastic state, variable step
+# and friction history are in the checkpoint): a bit flipped, bytes zeroed
+# or the file cut, then --restart: refused (2), or, if the damage hit
+# unused bytes, results equal to an uninterrupted run.
+fam_seed=1200
+for d in finite.nml axi.nml; do
+  fam_seed=$((fam_seed + 1))
+  i=0
+  for r in $(rng "$fam_seed" 4 1000000); do
+    i=$((i + 1))
+    case $i in 1|2) mode=flip ;; 3) mode=zero ;; *) mode=cut ;; esac
+    fcase "restart.$d.checkpoint-$mode.$r" restart maybe "2 4" "$d" "$d: its checkpoint damaged ($mode at $r ppm of its size), then --restart"
+    set_key "$fdeck" t_end 1.0e-4
+    set_args --restart "out/${d%.nml}.checkpoint.h5"
+    set_setup damage
+    printf 'damage=.checkpoint.h5 %s %s\ndeck=%s\n' "$r" "$mode" "$d" >> "$c/case.txt"
+  done
+done
 
 # ---------------------------------------------------------------- fmutate
 # Random mutations of the four seeds, as trunc / flip / subst / lines do
