@@ -249,7 +249,7 @@ contains
   subroutine resume_run()
     type(output_mark_t) :: mark
     allocate(watch_record(KINETIC_CHECK_LENGTH + CONTACT_WATCH_LENGTH))
-    call read_checkpoint(cli%restart_path, scene, state, pairs, history_width(model, pairs), mark, watch_record, err)
+    call read_checkpoint(cli%restart_path, scene, mesh, state, pairs, history_width(model, pairs), mark, watch_record, err)
     if (err%failed()) call finish(err)
     call resume_outputs(out, scene, model, plan, pairs, stem, mark, err)
     if (err%failed()) call finish(err)
@@ -287,7 +287,7 @@ contains
     call system_clock(c0, rate)
     call mark_outputs(out, mark, err)
     if (err%failed()) call finish(err)
-    call write_checkpoint(stem, scene, state, pairs, mark, &
+    call write_checkpoint(stem, scene, mesh, state, pairs, mark, &
       [kinetic_check_record(kcheck), contact_watch_record(contact_watch)], err)
     if (err%failed()) call finish(err)
     call system_clock(c1)

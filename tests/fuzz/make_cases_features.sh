@@ -34,8 +34,8 @@
 #             named twice, a body's elements in no group                2
 #   restart   runs of frictional contact (axisymmetric, finite, loops)
 #             stopped by --wall-clock and restarted: unchanged (valid,
-#             results equal to the uninterrupted run) or with a changed
-#             deck (refused: 2)                                         2 (valid)
+#             results equal to the uninterrupted run), with a changed
+#             deck or mesh (refused: 2), from a damaged checkpoint     2 4 (valid, maybe)
 #   fmutate   trunc / flip / subst / lines on the four seeds above      2 3 (maybe)
 
 # Seeds of these families and their meshes (mesh_of / deck_of of
@@ -543,6 +543,18 @@ sed -i 's/^kind=bad/kind=maybe/' "$c/case.txt"
 rs_case mscale loop.nml bad 2 deck "loop.nml stopped, then restarted with mass scaling"
 cp "$fdeck" "$c/next.nml"; add_to_group "$c/next.nml" time "mass_scaling_factor = 2.0"
 set_names mass_scaling
+# The mesh edited between the stop and the restart (the deck unchanged):
+# the checkpoint's scene carries a fingerprint of the mesh.
+rs_case mesh-node loop.nml bad 2 swap "loop.nml stopped, then restarted after node 1 of loop.msh moved"
+mkdir "$c/next" && cp "$fmesh" "$c/next/"
+sed -i 's/^1 -1.5 -1.5 0$/1 -1.6 -1.5 0/' "$c/next/loop.msh"
+set_names "mesh"
+rs_case mesh-set axi.nml bad 2 swap "axi.nml stopped, then restarted after node 21 left the set punch_axis"
+mkdir "$c/next" && cp "$fmesh" "$c/next/"
+sed -i 's/^21, 24, 28$/24, 28/' "$c/next/axi.inp"
+set_names "mesh"
+rs_case mesh-same finite.nml valid 0 swap "finite.nml stopped, then restarted after contact.msh was rewritten unchanged"
+mkdir "$c/next" && cp "$fmesh" "$c/next/"
 rs_case output loop.nml valid 0 deck "loop.nml stopped, then restarted with another checkpoint_every (allowed)"
 cp "$fdeck" "$c/next.nml"; printf '&run checkpoint_every = 1000 /\n' >> "$c/next.nml"
 
