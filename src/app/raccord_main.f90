@@ -107,7 +107,17 @@ program raccord_main
   if (restart) then
     call checkpoint_scene_path(cli%restart_path, recorded_scene, err)   ! also checks the file
     if (err%failed()) call finish(err)
-    if (.not. allocated(cli%scene_path)) cli%scene_path = recorded_scene
+    if (.not. allocated(cli%scene_path)) then
+      cli%scene_path = recorded_scene
+      ! the deck the checkpoint records, moved or deleted since: say where
+      ! the path came from and how to give the deck
+      if (.not. file_exists(recorded_scene)) then
+        call raise_error(err, EXIT_INPUT, 'restart: ' // cli%restart_path // ' was written for the deck ' // &
+          recorded_scene // ', which no longer exists; give the deck after the checkpoint: raccord --restart ' // &
+          cli%restart_path // ' DECK')
+        call finish(err)
+      end if
+    end if
   end if
   call read_scene(cli%scene_path, scene, err)
   if (err%failed()) call finish(err)

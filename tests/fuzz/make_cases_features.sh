@@ -567,6 +567,8 @@ sed -i 's/^21, 24, 28$/24, 28/' "$c/next/axi.inp"
 set_names "mesh"
 rs_case mesh-same finite.nml valid 0 swap "finite.nml stopped, then restarted after contact.msh was rewritten unchanged"
 mkdir "$c/next" && cp "$fmesh" "$c/next/"
+rs_case deck-gone loop.nml bad 2 gone "loop.nml stopped, then deleted before the restart (the checkpoint records its path)"
+set_names "no longer exists"
 rs_case output loop.nml valid 0 deck "loop.nml stopped, then restarted with another checkpoint_every (allowed)"
 cp "$fdeck" "$c/next.nml"; printf '&run checkpoint_every = 1000 /\n' >> "$c/next.nml"
 
