@@ -32,7 +32,8 @@ module raccord_checkpoint
   use raccord_files, only: rename_file, delete_file, file_exists, write_failure_reason, crc_of_file
   use raccord_h5, only: h5_acquire, h5_release, h5_create_file, h5_write_real, h5_write_int, h5_write_text, h5_attr_text, &
     h5_attr_int, h5_link_exists
-  use raccord_crc32, only: crc32_t, crc_add, crc_value
+  use raccord_crc32, only: crc32_t, crc_add, crc_value, crc_hex
+  use raccord_mesh, only: mesh_t
   use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8, &
     h5_read_attr_int
   implicit none
@@ -41,7 +42,8 @@ module raccord_checkpoint
   public :: checkpoint_name, write_checkpoint, read_checkpoint, checkpoint_scene_path, scene_identity
 
   !> Version of the checkpoint layout; a checkpoint of another version is refused.
-  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 3
+  !> 4: /scene ends with the mesh line of mesh_identity.
+  integer, parameter, public :: CHECKPOINT_FORMAT_VERSION = 4
   character(len=*), parameter :: FORMAT_NAME = 'raccord checkpoint'
   !> Keys that do not change the results: a restart may change them.
   character(len=*), parameter :: FREE_KEYS(*) = [character(len=20) :: 'output_dir', 'wall_clock', &
@@ -88,13 +90,53 @@ contains
     close(unit)
   end function scene_identity
 
+  !> The mesh as a restart compares it: the deck names the mesh file by its
+  !> path only, and a mesh edited between the stop and the restart (a node
+  !> moved, a set grown) would otherwise be taken silently, the run going on
+  !> from a state of the old mesh. One line: counts and a CRC-32 of the
+  !> coordinates (as read, before &mesh scale), ids, connectivity, sets and
+  !> surfaces.
+  function mesh_identity(mesh) result(text)
+    type(mesh_t), intent(in) :: mesh
+    character(len=:), allocatable :: text
+    type(crc32_t) :: c
+    integer :: k
+    if (allocated(mesh%x)) call crc_add(c, mesh%x)
+    if (allocated(mesh%node_id)) call crc_add(c, mesh%node_id)
+    if (allocated(mesh%etype)) call crc_add(c, mesh%etype)
+    if (allocated(mesh%conn)) call crc_add(c, reshape(mesh%conn, [size(mesh%conn)]))
+    if (allocated(mesh%elem_id)) call crc_add(c, mesh%elem_id)
+    if (allocated(mesh%nsets)) then
+      do k = 1, size(mesh%nsets)
+        call crc_add(c, mesh%nsets(k)%name)
+        call crc_add(c, mesh%nsets(k)%nodes)
+      end do
+    end if
+    if (allocated(mesh%esets)) then
+      do k = 1, size(mesh%esets)
+        call crc_add(c, mesh%esets(k)%name)
+        call crc_add(c, mesh%esets(k)%elems)
+      end do
+    end if
+    if (allocated(mesh%surfaces)) then
+      do k = 1, size(mesh%surfaces)
+        call crc_add(c, mesh%surfaces(k)%name)
+        if (mesh%surfaces(k)%nedge > 0) call crc_add(c, reshape(mesh%surfaces(k)%edge(:, 1:mesh%surfaces(k)%nedge), &
+          [size(mesh%surfaces(k)%edge, 1)*mesh%surfaces(k)%nedge]))
+      end do
+    end if
+    text = 'mesh ' // str(mesh%nnode) // ' nodes, ' // str(mesh%nelem) // ' elements, CRC-32 ' // &
+      crc_hex(crc_value(c)) // new_line('a')
+  end function mesh_identity
+
   !> Write <stem>.checkpoint.h5 (via .part and rename).
   !> watch: the record of the run's watchers (the quasi-static check, the
   !> contact energy watch), kept so that a restarted run reports on the
   !> whole run; they only report, so it is not in the checksum.
-  subroutine write_checkpoint(stem, scene, state, pairs, mark, watch, err)
+  subroutine write_checkpoint(stem, scene, mesh, state, pairs, mark, watch, err)
     character(len=*), intent(in) :: stem
     type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
     type(state_t), intent(in) :: state
     type(contact_pair_t), intent(in) :: pairs(:)
     type(output_mark_t), intent(in) :: mark
@@ -107,7 +149,7 @@ contains
     type(error_t) :: cerr
 
     if (err%failed()) return
-    identity = scene_identity(scene, err)
+    identity = scene_identity(scene, err) // mesh_identity(mesh)
     if (err%failed()) return
     part = checkpoint_name(stem) // '.part'
     where = 'checkpoint "' // part // '"'
@@ -206,9 +248,10 @@ contains
   !> fit the model. ncol: number of history columns of this scene.
   !> watch: the watchers' record of write_checkpoint, when it has the
   !> length of this scene's (else left unallocated: the watchers start anew).
-  subroutine read_checkpoint(path, scene, state, pairs, ncol, mark, watch, err)
+  subroutine read_checkpoint(path, scene, mesh, state, pairs, ncol, mark, watch, err)
     character(len=*), intent(in) :: path
     type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
     type(state_t), intent(inout) :: state
     type(contact_pair_t), intent(inout) :: pairs(:)
     integer, intent(in) :: ncol
@@ -216,15 +259,17 @@ contains
     real(wp), allocatable, intent(inout) :: watch(:)
     type(error_t), intent(inout) :: err
     integer(hid_t) :: file
-    character(len=:), allocatable :: where, text, identity, g
+    character(len=:), allocatable :: where, text, identity, g, scene_part, mesh_part
     integer(i8) :: counters(4), two(2), four(4), one(1)
     real(wp) :: td(2), en(10), r1(1)
     real(wp), allocatable :: flat(:,:)
     integer :: k, ib, kb
 
     where = 'checkpoint "' // path // '"'
-    identity = scene_identity(scene, err)
+    scene_part = scene_identity(scene, err)
     if (err%failed()) return
+    mesh_part = mesh_identity(mesh)
+    identity = scene_part // mesh_part
     call open_checkpoint(path, file, err)
     if (err%failed()) return
     steps: block
@@ -235,7 +280,13 @@ contains
         'uninterrupted run')
       call h5_read_text(file, '/scene', text, where, err)
       if (err%failed()) exit steps
-      if (text /= identity) then
+      if (text /= identity .and. index(text, scene_part) == 1) then
+        call raise_error(err, EXIT_INPUT, 'restart refused: mesh ' // mesh%source // ' is not the one ' // &
+          path // ' was written with (the checkpoint has "' // trim(text(len(scene_part) + 1:len(text) - 1)) // &
+          '", the file now "' // mesh_part(1:len(mesh_part) - 1) // '"): it changed since the run ' // &
+          'stopped. Restore it, or run afresh without --restart')
+        exit steps
+      else if (text /= identity) then
         call raise_error(err, EXIT_INPUT, 'restart refused: scene ' // scene%path // ' is not the one ' // &
           path // ' was written for; ' // first_difference(text, identity) // '. Restart with the same ' // &
           'scene, or run the changed scene afresh without --restart')
@@ -504,9 +555,11 @@ contains
     character(len=*), intent(in) :: a, b
     character(len=:), allocatable :: s
     integer :: ia, ib, ea, eb
+    character(len=:), allocatable :: group, la, lb
     character(len=1), parameter :: nl = new_line('a')
     ia = 1
     ib = 1
+    group = ''
     do
       ea = next_end(a, ia)
       eb = next_end(b, ib)
@@ -515,11 +568,25 @@ contains
         return
       end if
       if (a(ia:ea) /= b(ib:eb)) exit
+      la = trim(adjustl(a(ia:ea)))
+      if (len(la) > 0) then
+        if (la(1:1) == '&') group = la
+      end if
       ia = ea + 2
       ib = eb + 2
     end do
-    s = 'first difference: the checkpoint has "' // trim(adjustl(a(ia:ea))) // '", the scene "' // &
-      trim(adjustl(b(ib:eb))) // '"'
+    la = trim(adjustl(a(ia:ea)))
+    lb = trim(adjustl(b(ib:eb)))
+    ! A key that one echo has and the other not (the mass-scaling keys are
+    ! echoed only when given) meets the other's group end "/".
+    if (la == '/') then
+      s = 'first difference: the scene has "' // lb // '", which the checkpoint''s scene has not'
+    else if (lb == '/') then
+      s = 'first difference: the checkpoint''s scene has "' // la // '", which the scene has not'
+    else
+      s = 'first difference: the checkpoint has "' // la // '", the scene "' // lb // '"'
+    end if
+    if (len(group) > 0 .and. la(1:min(1, len(la))) /= '&') s = s // ' (in ' // group // ')'
   contains
     pure integer function next_end(t, i0) result(e)
       character(len=*), intent(in) :: t

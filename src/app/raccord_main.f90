@@ -29,6 +29,7 @@ program raccord_main
   use raccord_model, only: model_t
   use raccord_model_build, only: build_model
   use raccord_time_step, only: time_plan_t, choose_time_step, adapt_time_step, check_deformation
+  use raccord_state_guard, only: prediction_finite
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
@@ -106,7 +107,17 @@ program raccord_main
   if (restart) then
     call checkpoint_scene_path(cli%restart_path, recorded_scene, err)   ! also checks the file
     if (err%failed()) call finish(err)
-    if (.not. allocated(cli%scene_path)) cli%scene_path = recorded_scene
+    if (.not. allocated(cli%scene_path)) then
+      cli%scene_path = recorded_scene
+      ! the deck the checkpoint records, moved or deleted since: say where
+      ! the path came from and how to give the deck
+      if (.not. file_exists(recorded_scene)) then
+        call raise_error(err, EXIT_INPUT, 'restart: ' // cli%restart_path // ' was written for the deck ' // &
+          recorded_scene // ', which no longer exists; give the deck after the checkpoint: raccord --restart ' // &
+          cli%restart_path // ' DECK')
+        call finish(err)
+      end if
+    end if
   end if
   call read_scene(cli%scene_path, scene, err)
   if (err%failed()) call finish(err)
@@ -164,6 +175,11 @@ program raccord_main
       if (err%failed()) call finish(err)
     end if
     call predict_motion(model, state)        ! (CD-1), (CD-2): v(n+1/2), u*(n+1); reactions
+    ! A non-finite prediction stops before the contact search sizes its
+    ! bins from it (raccord_state_guard).
+    if (size(pairs) > 0) then
+      if (.not. prediction_finite(state)) call stop_non_finite('non-finite predicted displacement')
+    end if
     ! Forward increment: the multipliers lambda(n) make the contact and
     ! friction conditions (paper eq. 19) hold at t(n+1); u(n+1) and v(n+1/2)
     ! are corrected. A scene without contact pairs skips it.
@@ -243,7 +259,7 @@ contains
   subroutine resume_run()
     type(output_mark_t) :: mark
     allocate(watch_record(KINETIC_CHECK_LENGTH + CONTACT_WATCH_LENGTH))
-    call read_checkpoint(cli%restart_path, scene, state, pairs, history_width(model, pairs), mark, watch_record, err)
+    call read_checkpoint(cli%restart_path, scene, mesh, state, pairs, history_width(model, pairs), mark, watch_record, err)
     if (err%failed()) call finish(err)
     call resume_outputs(out, scene, model, plan, pairs, stem, mark, err)
     if (err%failed()) call finish(err)
@@ -281,7 +297,7 @@ contains
     call system_clock(c0, rate)
     call mark_outputs(out, mark, err)
     if (err%failed()) call finish(err)
-    call write_checkpoint(stem, scene, state, pairs, mark, &
+    call write_checkpoint(stem, scene, mesh, state, pairs, mark, &
       [kinetic_check_record(kcheck), contact_watch_record(contact_watch)], err)
     if (err%failed()) call finish(err)
     call system_clock(c1)
@@ -333,9 +349,16 @@ contains
   !> NaN/Inf guard: the energies sum over every node, so a non-finite value
   !> anywhere shows in them. Stop with the step, time and worst node.
   subroutine guard_finite()
+    if (ieee_is_finite(state%energy%kinetic) .and. ieee_is_finite(state%energy%internal)) return
+    call stop_non_finite('non-finite energy')
+  end subroutine guard_finite
+
+  !> Stop with exit 3: `what` at the step and time, and the first
+  !> non-finite (or fastest) node.
+  subroutine stop_non_finite(what)
+    character(len=*), intent(in) :: what
     integer :: i, worst
     real(wp) :: vmax
-    if (ieee_is_finite(state%energy%kinetic) .and. ieee_is_finite(state%energy%internal)) return
     worst = 0
     vmax = -1.0_wp
     do i = 1, model%nnode
@@ -348,11 +371,11 @@ contains
         worst = i
       end if
     end do
-    call raise_error(err, EXIT_NUMERIC, 'non-finite energy at step ' // str(state%step) // ', t = ' // &
+    call raise_error(err, EXIT_NUMERIC, what // ' at step ' // str(state%step) // ', t = ' // &
       str(state%time) // '; first non-finite (or fastest) node: ' // str(mesh%node_id(max(1, worst))) // &
       '. The run is unstable: reduce &time safety or dt, check the material data and loads.')
     call finish(err)
-  end subroutine guard_finite
+  end subroutine stop_non_finite
 
   !> raccord --verify FILE: check the file, print what was checked, exit
   !> 0 (intact) or with the error (2: damaged).

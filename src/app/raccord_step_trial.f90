@@ -18,7 +18,8 @@ module raccord_step_trial
   use raccord_error, only: error_t
   use raccord_model, only: model_t
   use raccord_state, only: state_t, init_state
-  use raccord_time_step, only: time_plan_t
+  use raccord_time_step, only: time_plan_t, check_deformation
+  use raccord_state_guard, only: prediction_finite
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_elastic_block, only: add_nodal_stress
   use raccord_contact_pair, only: contact_pair_t, enforce_contact
@@ -83,7 +84,14 @@ contains
     do k = 0, int(min(int(trial_steps, i8), plan%nsteps))
       t0 = seconds_now(threaded)
       call compute_forces(model, scratch)
+      ! A trial that inverts an element or blows up stops there: what was
+      ! timed so far stands (the run itself stops with the message).
+      if (model%has_finite) then
+        call check_deformation(model, scratch, err)
+        if (err%failed()) exit
+      end if
       call predict_motion(model, scratch)
+      if (.not. prediction_finite(scratch)) exit
       t1 = seconds_now(threaded)
       if (size(trial) > 0) call enforce_contact(trial, model, scratch, err)
       if (err%failed()) exit
@@ -159,6 +167,7 @@ contains
     do k = 0, engaged_steps
       scratch%v = w
       call predict_motion(model, scratch)
+      if (.not. prediction_finite(scratch)) exit
       t1 = seconds_now(threaded)
       call enforce_contact(trial, model, scratch, err)
       t2 = seconds_now(threaded)

@@ -5,6 +5,7 @@
 !> moved by more than a skin distance, with boxes padded by that skin.
 !> Memory is kept between steps and grows only when a surface needs more.
 module raccord_contact_search
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
   implicit none
   private
@@ -65,13 +66,24 @@ contains
       mean_size = mean_size + maxval(hi - lo) + 2.0_wp*r
     end do
     bins%cell = max(mean_size/real(max(nseg, 1), wp), tiny(1.0_wp))
-    do while (real(ceiling((gh(1) - gl(1))/bins%cell), wp)*real(ceiling((gh(2) - gl(2))/bins%cell), wp) > &
-              4.0_wp*real(nseg, wp) + 16.0_wp)
-      bins%cell = 2.0_wp*bins%cell
-    end do
+    ! Extents that overflow (a search distance near huge) or are not finite
+    ! (a NaN position) would never bring the cell count below the bound
+    ! (an endless loop): one cell holding every segment then (a fuzz input
+    ! check; the time loop stops a non-finite motion before the search).
+    if (.not. (all(ieee_is_finite(gh - gl)) .and. ieee_is_finite(bins%cell))) then
+      bins%cell = huge(1.0_wp)
+      bins%nx = 1
+      bins%ny = 1
+      gl = 0.0_wp
+    else
+      do while (real(ceiling((gh(1) - gl(1))/bins%cell), wp)*real(ceiling((gh(2) - gl(2))/bins%cell), wp) > &
+                4.0_wp*real(nseg, wp) + 16.0_wp)
+        bins%cell = 2.0_wp*bins%cell
+      end do
+      bins%nx = max(1, ceiling((gh(1) - gl(1))/bins%cell))
+      bins%ny = max(1, ceiling((gh(2) - gl(2))/bins%cell))
+    end if
     bins%origin = gl
-    bins%nx = max(1, ceiling((gh(1) - gl(1))/bins%cell))
-    bins%ny = max(1, ceiling((gh(2) - gl(2))/bins%cell))
     call ensure(bins%count, bins%nx*bins%ny)
     call ensure(bins%head, bins%nx*bins%ny + 1)
     bins%count(1:bins%nx*bins%ny) = 0
@@ -112,6 +124,11 @@ contains
     integer :: i, j, c
     first = 1
     last = 0
+    if (bins%cell == huge(1.0_wp)) then         ! the one-cell fallback of build_bins
+      first = bins%head(1)
+      last = bins%head(2) - 1
+      return
+    end if
     i = floor((p(1) - bins%origin(1))/bins%cell) + 1
     j = floor((p(2) - bins%origin(2))/bins%cell) + 1
     if (i < 1 .or. i > bins%nx .or. j < 1 .or. j > bins%ny) return
@@ -124,6 +141,13 @@ contains
     type(bins_t), intent(in) :: bins
     real(wp), intent(in) :: box(4)
     integer, intent(out) :: i0, i1, j0, j1
+    if (bins%cell == huge(1.0_wp)) then         ! the one-cell fallback of build_bins
+      i0 = 1
+      i1 = 1
+      j0 = 1
+      j1 = 1
+      return
+    end if
     i0 = max(1, floor((box(1) - bins%origin(1))/bins%cell) + 1)
     j0 = max(1, floor((box(2) - bins%origin(2))/bins%cell) + 1)
     i1 = min(bins%nx, floor((box(3) - bins%origin(1))/bins%cell) + 1)

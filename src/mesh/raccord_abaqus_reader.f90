@@ -226,7 +226,7 @@ contains
       st%block = BLK_ELEMENT
       call get_param(sl%text, f, l, nf, 'type', typ, found)
       if (.not. found) then
-        call raise_error(err, EXIT_INPUT, at // ': *ELEMENT needs TYPE= (CPE4, CPS4, CPE8 or CPS8)')
+        call raise_error(err, EXIT_INPUT, at // ': *ELEMENT needs TYPE= (CPE4, CPS4, CAX4, CPE8, CPS8 or CAX8)')
         return
       end if
       call element_type(lower(typ), st%etype, st%nen, found)

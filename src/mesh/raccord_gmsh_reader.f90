@@ -176,7 +176,7 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: line
     integer, allocatable :: f(:), l(:)
-    integer :: nf, n, k, dim, tag, q1, q2
+    integer :: nf, n, k, j, dim, tag, q1, q2
     call read_count(tf, 'PhysicalNames', 'the number of names', n, err)
     if (err%failed()) return
     deallocate(st%name_dim, st%name_tag, st%names)
@@ -189,13 +189,42 @@ contains
       if (err%failed()) return
       q1 = index(line, '"')
       q2 = index(line, '"', back=.true.)
+      ! A name the deck cannot reach would leave its group under its tag,
+      ! and the deck's set "not found" far from the cause: refused here.
+      if (dim < 0 .or. dim > 2) then
+        call raise_error(err, EXIT_INPUT, here(tf) // ': physical group ' // str(tag) // ' has dimension ' // &
+          str(dim) // '; a 2D mesh has groups of dimension 0 (points), 1 (curves) and 2 (surfaces): ' // &
+          'mesh in 2D (gmsh -2) with the groups on points, curves and surfaces')
+        return
+      end if
+      if (q1 == 0 .or. q2 == q1) then
+        call raise_error(err, EXIT_INPUT, here(tf) // ': the name of physical group ' // str(tag) // &
+          ' is not in double quotes (a line is: dimension tag "name"); re-export the mesh from Gmsh')
+        return
+      end if
+      if (q2 == q1 + 1 .or. len_trim(line(q1 + 1:max(q1, q2 - 1))) == 0) then
+        call raise_error(err, EXIT_INPUT, here(tf) // ': physical group ' // str(tag) // ' has an empty ' // &
+          'name ""; give it a name in the .geo (Physical Curve("name") = {...};) or drop the line')
+        return
+      end if
       st%name_dim(k) = dim
       st%name_tag(k) = tag
-      if (q2 > q1 + 1) then
-        st%names(k)%s = line(q1 + 1:q2 - 1)
-      else
-        st%names(k)%s = str(tag)
-      end if
+      st%names(k)%s = line(q1 + 1:q2 - 1)
+      do j = 1, k - 1
+        if (st%name_dim(j) /= dim) cycle
+        if (st%name_tag(j) == tag) then
+          call raise_error(err, EXIT_INPUT, here(tf) // ': physical group ' // str(tag) // ' of dimension ' // &
+            str(dim) // ' is named a second time ("' // st%names(j)%s // '" and "' // st%names(k)%s // &
+            '"); keep one line per group')
+          return
+        end if
+        if (st%names(j)%s == st%names(k)%s) then
+          call raise_error(err, EXIT_INPUT, here(tf) // ': the name "' // st%names(k)%s // '" is given to ' // &
+            'two physical groups of dimension ' // str(dim) // ' (tags ' // str(st%name_tag(j)) // ' and ' // &
+            str(tag) // '); a set name must be unique: rename one, or put both in one group')
+          return
+        end if
+      end do
     end do
     st%nname = n
     call expect_end(tf, 'PhysicalNames', err)

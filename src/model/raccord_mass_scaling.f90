@@ -27,7 +27,9 @@
 !> the load (measured on the paper's unloading, doc/accuracy-cost.md
 !> section 14). Body forces are given per unit volume and are not scaled.
 module raccord_mass_scaling
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
+  use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info, log_warn
   use raccord_strings, only: str
   use raccord_scene, only: scene_t
@@ -51,10 +53,12 @@ contains
   !> Scale the densities (MS-1) of the model built unscaled by build_bodies
   !> and rebuild its lumped masses, the bodies' masses and the stable-step
   !> bounds. Before the inverse masses are formed. Does nothing when the
-  !> scene does not ask for it.
-  subroutine apply_mass_scaling(scene, model)
+  !> scene does not ask for it. A target step longer than the run, or one
+  !> whose density factors overflow, is refused (exit 2) naming the key.
+  subroutine apply_mass_scaling(scene, model, err)
     type(scene_t), intent(in) :: scene
     type(model_t), intent(inout) :: model
+    type(error_t), intent(inout) :: err
     real(wp), allocatable :: w2e(:), sc(:), mb(:), ones(:), w2f(:), m0(:)
     real(wp) :: w2_target, dt_unscaled
     integer :: ib, k, nb
@@ -67,7 +71,21 @@ contains
     else
       model%scaling%dt_target = scene%time%mass_scaling_factor*dt_unscaled
     end if
+    if (scene%time%mass_scaling_dt <= 0.0_wp .and. model%scaling%dt_target > scene%time%t_end) then
+      call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &time mass_scaling_factor = ' // &
+        str(scene%time%mass_scaling_factor) // ' asks for a step of ' // str(model%scaling%dt_target) // &
+        ' (that factor times the unscaled step ' // str(dt_unscaled) // '), longer than the run (t_end = ' // &
+        str(scene%time%t_end) // '); give a factor of at most ' // str(scene%time%t_end/dt_unscaled, 3) // &
+        ' (a quasi-static run takes hundreds of steps or more)')
+      return
+    end if
     w2_target = (2.0_wp*scene%time%safety/model%scaling%dt_target)**2
+    if (.not. (w2_target >= tiny(1.0_wp))) then
+      call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &time ' // trim(target_key(scene)) // &
+        ': the target step ' // str(model%scaling%dt_target) // ' s is beyond what the density factors ' // &
+        '(MS-1) can reach in floating point; give a shorter target step')
+      return
+    end if
     model%scaling%active = .true.
     model%scaling%w2_target = w2_target
     model%scaling%w2_unscaled = model%w2_bound
@@ -116,6 +134,12 @@ contains
             end if
           end associate
         end do
+        if (.not. ieee_is_finite(body%scale_max)) then
+          call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &time ' // trim(target_key(scene)) // &
+            ': the density factors (MS-1) of body ''' // body%name // ''' overflow for the target step ' // &
+            str(model%scaling%dt_target) // ' s; give a shorter target step')
+          return
+        end if
         model%w2_bound = max(model%w2_bound, body%w2_bound)
         if (spec%kinematics /= KIN_FINITE) model%w2_small = max(model%w2_small, body%w2_bound)
         call log_info('mass_scaling', 'body ''' // body%name // ''': ' // str(body%nscaled) // ' of ' // &
@@ -132,6 +156,17 @@ contains
     ! (MS-2): the damping matrix stays alpha M of the deck's masses
     where (model%mass > 0.0_wp) model%alpha = model%alpha*(m0/model%mass)
   end subroutine apply_mass_scaling
+
+  !> The key that set the target step, with its value, for messages.
+  function target_key(scene) result(s)
+    type(scene_t), intent(in) :: scene
+    character(len=:), allocatable :: s
+    if (scene%time%mass_scaling_dt > 0.0_wp) then
+      s = 'mass_scaling_dt = ' // str(scene%time%mass_scaling_dt)
+    else
+      s = 'mass_scaling_factor = ' // str(scene%time%mass_scaling_factor)
+    end if
+  end function target_key
 
   !> (m - m0)/m0, 0 for a massless body.
   pure real(wp) function added_fraction(m, m0) result(f)

@@ -119,9 +119,17 @@ contains
         where = 'scene ' // scene%path // ': &body ''' // trim(spec%name) // ''''
         ks = find_elem_set(mesh, spec%elset)
         if (ks == 0) then
-          call raise_error(err, EXIT_INPUT, where // ': element set ''' // trim(spec%elset) // &
-            ''' not found in mesh ' // mesh%source // '; element sets there: ' // set_names(mesh, 'elem') // &
-            '. Set elset to one of them (Gmsh: a physical surface; Abaqus: *ELSET or ELSET= on *ELEMENT).')
+          if (find_node_set(mesh, spec%elset) /= 0 .or. find_surface(mesh, spec%elset) /= 0) then
+            ! a group of that name of the wrong kind (Gmsh: a physical curve or point)
+            call raise_error(err, EXIT_INPUT, where // ': ''' // trim(spec%elset) // ''' in mesh ' // &
+              mesh%source // ' is a node set or surface (Gmsh: a physical curve or point), not an element ' // &
+              'set: elset names the elements of the body (Gmsh: a physical surface; Abaqus: *ELSET or ' // &
+              'ELSET= on *ELEMENT); element sets there: ' // set_names(mesh, 'elem'))
+          else
+            call raise_error(err, EXIT_INPUT, where // ': element set ''' // trim(spec%elset) // &
+              ''' not found in mesh ' // mesh%source // '; element sets there: ' // set_names(mesh, 'elem') // &
+              '. Set elset to one of them (Gmsh: a physical surface; Abaqus: *ELSET or ELSET= on *ELEMENT).')
+          end if
           return
         end if
         elems = mesh%esets(ks)%elems
@@ -222,7 +230,8 @@ contains
     nfree = count(elem_body == 0)
     if (nfree > 0) call log_warn('build_model', str(nfree) // ' mesh elements belong to no &body and are ignored')
     ! &time mass_scaling_dt / mass_scaling_factor: scaled masses and bounds
-    call apply_mass_scaling(scene, model)
+    call apply_mass_scaling(scene, model, err)
+    if (err%failed()) return
     allocate(model%minv(mesh%nnode), source=0.0_wp)
     where (model%mass > 0.0_wp) model%minv = 1.0_wp/model%mass
     ! Nodes of finite-strain and j2 bodies: their stored energy replaces
@@ -521,9 +530,16 @@ contains
     else
       k = find_surface(mesh, name)
       if (k == 0) then
-        call raise_error(err, EXIT_INPUT, where // ': no node set or surface named ''' // trim(name) // &
-          ''' in mesh ' // mesh%source // '; node sets there: ' // set_names(mesh, 'node') // &
-          '. Fix the set name, or add the set to the mesh (Gmsh: physical curve or point; Abaqus: *NSET).')
+        if (find_elem_set(mesh, name) /= 0) then
+          call raise_error(err, EXIT_INPUT, where // ': ''' // trim(name) // ''' in mesh ' // mesh%source // &
+            ' is an element set (Gmsh: a physical surface), not a node set or surface: a boundary condition ' // &
+            'acts on nodes or edges (Gmsh: a physical curve or point; Abaqus: *NSET or *SURFACE); node sets ' // &
+            'there: ' // set_names(mesh, 'node'))
+        else
+          call raise_error(err, EXIT_INPUT, where // ': no node set or surface named ''' // trim(name) // &
+            ''' in mesh ' // mesh%source // '; node sets there: ' // set_names(mesh, 'node') // &
+            '. Fix the set name, or add the set to the mesh (Gmsh: physical curve or point; Abaqus: *NSET).')
+        end if
         return
       end if
       nodes = surface_nodes(mesh, k)
@@ -600,5 +616,30 @@ contains
     end select
     s = trim(adjustl(s))
     if (len(s) == 0) s = '(none)'
+    ! The Gmsh reader names a physical group that $PhysicalNames does not
+    ! name by its tag: say so, or "5, 6" reads like a mistake of raccord's.
+    if (has_number_name(s)) s = s // ' (numbers: Gmsh physical groups ' // &
+      'without a name in $PhysicalNames; name them in the .geo, e.g. Physical Surface("plate") = {1};, ' // &
+      'or write the number in the deck)'
   end function set_names
+
+  !> One of the comma-separated names of list s is a number.
+  pure logical function has_number_name(s) result(yes)
+    character(len=*), intent(in) :: s
+    integer :: a, b
+    yes = .false.
+    a = 1
+    do while (a <= len(s))
+      b = index(s(a:), ',')
+      if (b == 0) then
+        b = len(s) + 1
+      else
+        b = a + b - 1
+      end if
+      if (len_trim(s(a:b - 1)) > 0) then
+        if (verify(trim(adjustl(s(a:b - 1))), '0123456789') == 0) yes = .true.
+      end if
+      a = b + 1
+    end do
+  end function has_number_name
 end module raccord_model_build

@@ -34,6 +34,8 @@ module raccord_deck
 
   public :: read_scene, write_scene
 
+  !> Largest &contact_pair max_iterations (read_contact).
+  integer, parameter :: MAX_CONTACT_ITERATIONS = 10000
   !> Groups a deck may hold, and which of them may appear only once.
   character(len=*), parameter :: GROUPS(*) = [character(len=12) :: 'run', 'mesh', 'body', 'boundary', &
     'amplitude', 'time', 'output', 'contact_pair']
@@ -76,7 +78,7 @@ contains
     type(error_t), intent(inout) :: err
     type(deck_block_t), allocatable :: blocks(:)
     integer :: first(size(GROUPS)), n_of(size(GROUPS))
-    integer, allocatable :: body_blk(:), bc_blk(:), amp_blk(:)
+    integer, allocatable :: body_blk(:), bc_blk(:), amp_blk(:), pair_blk(:)
     integer :: k, g, nbody, nbc, namp, ncontact
     character(len=:), allocatable :: stem
 
@@ -122,7 +124,7 @@ contains
     namp = n_of(group_index('amplitude'))
     ncontact = n_of(group_index('contact_pair'))
     allocate(scene%bodies(nbody), scene%bcs(nbc), scene%amplitudes(namp), scene%contacts(ncontact))
-    allocate(body_blk(nbody), bc_blk(nbc), amp_blk(namp))
+    allocate(body_blk(nbody), bc_blk(nbc), amp_blk(namp), pair_blk(ncontact))
 
     nbody = 0
     nbc = 0
@@ -152,6 +154,7 @@ contains
         call read_output(path, blocks(k), scene%output, err)
       case ('contact_pair')
         ncontact = ncontact + 1
+        pair_blk(ncontact) = k
         call read_contact(path, blocks(k), scene%contacts(ncontact), err)
       end select
       if (err%failed()) return
@@ -160,6 +163,8 @@ contains
     call check_references(path, blocks, scene, body_blk, bc_blk, amp_blk, err)
     if (err%failed()) return
     call check_hypotheses(path, blocks, scene, body_blk, err)
+    if (err%failed()) return
+    call check_pairs(path, blocks, scene, pair_blk, err)
     ! A body without its own damping takes the &time damping.
     do k = 1, size(scene%bodies)
       if (scene%bodies(k)%damping < 0.0_wp) scene%bodies(k)%damping = scene%time%damping
@@ -208,6 +213,27 @@ contains
       return
     end do
   end subroutine check_references
+
+  !> A pair given twice (the same slave and the same master) would enforce
+  !> the same conditions twice; two-pass contact swaps the roles.
+  subroutine check_pairs(deck, blocks, scene, pair_blk, err)
+    character(len=*), intent(in) :: deck
+    type(deck_block_t), intent(in) :: blocks(:)
+    type(scene_t), intent(in) :: scene
+    integer, intent(in) :: pair_blk(:)
+    type(error_t), intent(inout) :: err
+    integer :: i, j
+    do i = 2, size(scene%contacts)
+      do j = 1, i - 1
+        if (scene%contacts(i)%slave /= scene%contacts(j)%slave .or. &
+            scene%contacts(i)%master /= scene%contacts(j)%master) cycle
+        call bad_value(deck, blocks(pair_blk(i)), scene%contacts(i)%slave // '/' // scene%contacts(i)%master, &
+          'master', 'the same slave and master as the &contact_pair at line ' // str(blocks(pair_blk(j))%line), &
+          'give each pair once (two-pass contact swaps slave and master in the second pair)', err)
+        return
+      end do
+    end do
+  end subroutine check_pairs
 
   !> Bodies of one scene share the hypothesis family: all axisymmetric or
   !> all plane (plane strain and plane stress may mix; doc/scene-reference.md).
@@ -684,6 +710,7 @@ contains
       read(record, nml=contact_pair, iostat=ios, iomsg=msg)
     end do
     label = trim(slave) // '/' // trim(master)
+    if (len_trim(slave) == 0 .and. len_trim(master) == 0) label = ''   ! not '/'
     call check_keys(deck, blk, CONTACT_KEYS, label, err)
     if (err%failed()) return
     do k = 1, size(blk%keys)
@@ -720,6 +747,14 @@ contains
     else if (max_iterations < 1) then
       call bad_value(deck, blk, label, 'max_iterations', 'the iteration cap must be >= 1', &
         'use e.g. max_iterations = 200', err)
+    else if (max_iterations > MAX_CONTACT_ITERATIONS) then
+      ! A step is not interrupted inside the multiplier solve (a stop
+      ! signal waits for the step's end), so the cap bounds a step's time
+      ! when the active set cycles; the iteration settles in tens.
+      call bad_value(deck, blk, label, 'max_iterations', 'the iteration cap must be at most ' // &
+        str(MAX_CONTACT_ITERATIONS) // ' (a step is not interrupted inside the multiplier solve, so a ' // &
+        'larger cap could hold one step for hours)', 'use e.g. max_iterations = 200; a pair that does ' // &
+        'not converge within it is reported at each such step', err)
     end if
     if (err%failed()) return
 

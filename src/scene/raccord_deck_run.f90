@@ -6,6 +6,7 @@
 module raccord_deck_run
   use raccord_kinds, only: wp, path_len
   use raccord_error, only: error_t
+  use raccord_strings, only: str
   use raccord_deck_scan, only: deck_block_t
   use raccord_deck_checks, only: check_keys, unreadable, bad_value, missing_key, check_length, check_finite, UNSET
   use raccord_scene, only: run_spec_t, time_spec_t, output_spec_t
@@ -138,6 +139,10 @@ contains
     else if (.not. (mass_scaling_factor == 0.0_wp .or. mass_scaling_factor >= 1.0_wp)) then
       call bad_value(deck, blk, '', 'mass_scaling_factor', 'the target factor must be >= 1 (or 0: none)', &
         'give the step the run should take as a multiple of the unscaled step, e.g. 5', err)
+    else if (mass_scaling_dt > t_end) then
+      call bad_value(deck, blk, '', 'mass_scaling_dt', 'the target step is longer than the run (t_end = ' // &
+        str(t_end) // ')', 'give the step the run should take, at most t_end (a quasi-static run takes ' // &
+        'hundreds of steps or more)', err)
     else if (mass_scaling_dt > 0.0_wp .and. mass_scaling_factor > 0.0_wp) then
       call bad_value(deck, blk, '', 'mass_scaling_factor', 'mass_scaling_dt and mass_scaling_factor are both given', &
         'give one of them: the target step itself, or as a factor of the unscaled step', err)

@@ -43,7 +43,10 @@
 # tmpfs, root only), locked (flock(1) holds <stem>.lock during the run),
 # damage (a run stopped with --wall-clock, one of its files damaged, then
 # the case's --restart; an exit 0 must reproduce an uninterrupted run, by
-# cmp and h5diff). env= sets one environment variable for the run; args
+# cmp and h5diff; damage mode none: restarted as it is, mode deck: the deck
+# replaced by the case's next.nml first, mode swap: the files of the case's
+# next/ put in place first, mode gone: the deck deleted first,
+# make_cases_features.sh). env= sets one environment variable for the run; args
 # are split as the shell would split them ('' is an empty argument).
 #
 # Known failures (known_failures.txt next to this script: one case name a
@@ -124,6 +127,11 @@ damage_setup() {
       printf "\\$(printf %03o "$new")" | dd of="$target" bs=1 seek="$pos" conv=notrunc 2> /dev/null ;;
     zero) dd if=/dev/zero of="$target" bs=1 count=16 seek="$pos" conv=notrunc 2> /dev/null ;;
     cut) head -c "$pos" "$target" > "$target.cut" && mv "$target.cut" "$target" ;;
+    none) ;;
+    deck) cp "$ddir/next.nml" "$ddir/$deck" ;;
+    # the files of next/ (a mesh, say) put in place of the case's own
+    swap) cp "$ddir"/next/* "$ddir/" ;;
+    gone) rm -f "$ddir/$deck" ;;
   esac
   echo "damage: $mode at byte $pos of $size in $target" > "$ddir/setup.txt"
   return 0

@@ -48,7 +48,9 @@
 #   diskfull  the output folder fills up during the run (tmpfs)          4
 #   cmdline   bad command lines                                          1
 #   and the families of make_cases_hostile.sh (sizes, overflow, paths,
-#   damage, meshmix, threads, validdeck, messages), described there.
+#   damage, meshmix, threads, validdeck, messages) and of
+#   make_cases_features.sh (axi, finite, plastic, pairs, loops, mscale,
+#   abaqus, gmshphys, restart, fmutate), described there.
 set -u
 LC_ALL=C
 export LC_ALL
@@ -801,5 +803,9 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # The hostile-input families (issue #18): sizes, overflow, paths, damage,
 # meshmix, threads, validdeck, messages.
 . "$(dirname "$0")/make_cases_hostile.sh"
+# The families of the newer features (axisymmetric, finite strain, j2,
+# mortar conditions, closed loops, mass scaling, CAX8 surfaces, Gmsh
+# physical groups, restarts of frictional contact), described there.
+. "$(dirname "$0")/make_cases_features.sh"
 
 echo "make_cases: $ncase cases in $cases"
