@@ -93,6 +93,7 @@ module raccord_multiplier_solver
     real(wp), allocatable :: bc(:,:), bd(:,:), bx(:,:), be(:,:), bg(:)
     !> Use the saddle form only (tests compare the reduced forms with it).
     logical :: saddle_only = .false.
+    integer :: border_unknowns = 0                !< border unknowns of the last solve_banded_friction
     ! Report of the last solve.
     integer :: iterations = 0
     logical :: converged = .true.
@@ -574,6 +575,7 @@ contains
       if (info /= 0) return
       call number_unknowns(cs, nu, w, n, nb, info)
       if (info /= 0) return
+      w%border_unknowns = nb
       call friction_profile(cs, n, w, kl, ku)
       ldab = 2*kl + ku + 1
       call ensure2(w%ab, ldab, n)
