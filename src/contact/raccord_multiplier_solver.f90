@@ -59,7 +59,7 @@ module raccord_multiplier_solver
   !> a run of open and slipping constraints with at least BORDER_SLIP
   !> slipping ones takes a border unknown (its column of Z_t is dense over
   !> the run); at most BORDER_MAX of them, else the saddle form.
-  integer, parameter :: BORDER_SLIP = 3, BORDER_MAX = 12
+  integer, parameter :: BORDER_SLIP = 8, BORDER_MAX = 12
 
   !> Workspace and results, indexed by constraint; buffers grow only.
   type, public :: solver_work_t
