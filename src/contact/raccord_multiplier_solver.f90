@@ -16,8 +16,12 @@
 !> solved on the active multipliers alone (the Delassus form, band
 !> Cholesky: solve_frictionless); with friction and a diagonal G1
 !> (node-to-segment) on lambda of the active and tau of the sticking
-!> constraints (solve_diagonal_friction); otherwise (mortar with friction)
-!> the unknowns (lambda_j, gn_j [, tau_j, gt_j]) interleaved node by node,
+!> constraints (solve_diagonal_friction); with friction and a banded G1
+!> (mortar) on lambda of the active and q = tau - mu S lambda of the
+!> sticking constraints, the q next to a long slip zone bordered
+!> (solve_banded_friction); otherwise (weighted conditions with friction,
+!> or a reduced form declining) the saddle form: the unknowns
+!> (lambda_j, gn_j [, tau_j, gt_j]) interleaved node by node,
 !> the known gaps and slips left out, give one banded saddle system, solved
 !> by a banded LU with partial pivoting (raccord_band_solver, LAPACK's dgbsv
 !> algorithm without the per-column BLAS calls). doc/theory-contact.md,
@@ -176,7 +180,9 @@ contains
       w%status(1:m) = status(1:m)
       w%sigma(1:m) = sigma(1:m)
       w%iterations = 0
-    else if (friction .and. .not. cs%weighted) then
+    else if (friction .and. .not. cs%weighted .and. any(w%status(1:m) /= ST_STICK)) then
+      ! (A guess of all in stick leaves the saddle form nothing to
+      ! eliminate: it is then the same system, with less bookkeeping.)
       call solve_banded_friction(cs, dt, mu, max_iter, w, same, info)
       if (info == 0) then
         call finish_solve(cs, mu, friction, same, w, status, sigma)
