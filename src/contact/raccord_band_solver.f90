@@ -15,7 +15,7 @@ module raccord_band_solver
   implicit none
   private
 
-  public :: band_solve, band_cholesky_solve
+  public :: band_solve, band_factor, band_subst, band_cholesky_solve
 
   !> A Cholesky pivot below this fraction of its diagonal entry means a row
   !> (nearly) dependent on the ones before it: reported as singular.
@@ -38,7 +38,23 @@ contains
     integer, intent(inout) :: ipiv(:)         !< (>= n) pivot rows
     real(wp), intent(inout) :: b(:)           !< (>= n) right-hand side in, solution out
     integer, intent(in) :: fcol(:), lcol(:)   !< (n) first and last nonzero column of each row
-    integer, intent(inout) :: ext(:)          !< (>= 2 n) scratch: row extents, then last row reaching each column
+    integer, intent(inout) :: ext(:)          !< (>= 3 n) scratch: row extents, then last row reaching each column
+    integer, intent(out) :: info
+    call band_factor(n, kl, ku, ab, ipiv, fcol, lcol, ext, info)
+    if (info /= 0) return
+    call band_subst(n, kl, ku, ab, ipiv, ext, b)
+  end subroutine band_solve
+
+  !> The factorisation of band_solve alone (A = P L U in place, same
+  !> arguments): band_subst then solves with it for any number of
+  !> right-hand sides (ext(n + 1 : 2 n) keeps the extent of each column of
+  !> L, ext(2 n + 1 : 3 n) that of each column of U).
+  pure subroutine band_factor(n, kl, ku, ab, ipiv, fcol, lcol, ext, info)
+    integer, intent(in) :: n, kl, ku
+    real(wp), intent(inout) :: ab(:,:)        !< (2*kl + ku + 1, >= n)
+    integer, intent(inout) :: ipiv(:)         !< (>= n) pivot rows
+    integer, intent(in) :: fcol(:), lcol(:)   !< (n) first and last nonzero column of each row
+    integer, intent(inout) :: ext(:)          !< (>= 3 n) scratch: row extents, then last row reaching each column
     integer, intent(out) :: info
     integer :: kv, j, i, jp, km, jj, l, off, last, jl, r
     real(wp) :: amax, piv_inv, t, y
@@ -110,6 +126,30 @@ contains
       ext(n + j) = j + km
     end do columns
     if (info /= 0) return
+    ! ext(2 n + j): the first row of U reaching column j (from the rows'
+    ! last columns, ext(1:n)), so that the back substitution skips the
+    ! zeros above it (the same operations on the nonzeros, in the same order).
+    ext(2*n + 1:3*n) = n + 1
+    do i = 1, n
+      l = min(ext(i), n)
+      ext(2*n + l) = min(ext(2*n + l), i)
+    end do
+    last = n + 1
+    do j = n, 1, -1
+      last = min(last, ext(2*n + j), j)
+      ext(2*n + j) = last
+    end do
+  end subroutine band_factor
+
+  !> Solve A x = b in place with the factors of band_factor.
+  pure subroutine band_subst(n, kl, ku, ab, ipiv, ext, b)
+    integer, intent(in) :: n, kl, ku
+    real(wp), intent(in) :: ab(:,:)           !< factors from band_factor
+    integer, intent(in) :: ipiv(:), ext(:)    !< pivots and column extents from band_factor
+    real(wp), intent(inout) :: b(:)           !< (>= n) right-hand side in, solution out
+    integer :: kv, j, i, km, l
+    real(wp) :: t
+    kv = ku + kl
 
     ! Forward: L with the row interchanges.
     do j = 1, n - 1
@@ -132,11 +172,11 @@ contains
       b(j) = b(j)/ab(kv + 1, j)
       t = b(j)
       l = kv + 1 - j
-      do i = j - 1, max(1, j - kv), -1
+      do i = j - 1, max(1, j - kv, ext(2*n + j)), -1
         b(i) = b(i) - t*ab(l + i, j)
       end do
     end do
-  end subroutine band_solve
+  end subroutine band_subst
 
   !> Solve R x = b in place for R symmetric positive definite with half
   !> band kr, by band Cholesky R = L L' (left-looking, plain loops: the
