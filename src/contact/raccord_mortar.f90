@@ -1,8 +1,9 @@
 !> Mortar matching ("raccord integral", paper sections 2-3, equations
 !> (8)-(19); method brief section 5; doc/theory-contact-mortar.md).
 !>
-!> One constraint per slave chain node j whose multiplier psi_j meets the
-!> master: its row holds -G1(i, j) on slave nodes i and +G21(a, j) on master
+!> One constraint per slave corner node j whose multiplier psi_j meets the
+!> master (mid nodes of 3-node edges carry none; raccord_mortar_segments):
+!> its row holds -G1(i, j) on slave nodes i and +G21(a, j) on master
 !> nodes a, with (paper, after (15) and (16))
 !>   G1(i, j)  = integral of phi_i psi_j dGamma,   G21(a, j) = integral of phi_a psi_j dGamma,
 !> integrated over the part of the slave surface that faces the master
@@ -387,10 +388,13 @@ contains
           ! (constraint numbering: g1(d, j) = G1(j + d, j)).
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
-            if (v == 0.0_wp) cycle
-            call cs_add_entry(cs, slave%seg(ai, k), -v)
+            if (v /= 0.0_wp) call cs_add_entry(cs, slave%seg(ai, k), -v)
             i = w%cidx(w%pos(ai, k))
-            if (i > 0) then
+            ! 3-node edges: the conditions' G1 is that of the corners' linear
+            ! hats N_corner + N_mid/2 (each mid node's share split between
+            ! its two corners; see below).
+            if (nen == 3 .and. ai <= 2) v = v + 0.5_wp*w%g1loc(3, b, k)
+            if (i > 0 .and. v /= 0.0_wp) then
               d = i - j
               cs%g1(d, j) = cs%g1(d, j) + v
               band = max(band, abs(d))
@@ -401,6 +405,26 @@ contains
             if (w%ment_loc(e) == b) call cs_add_entry(cs, w%ment_node(e), w%ment_w(e))
           end do
         end do
+        if (nen == 3) then
+          ! 3-node edges: the multipliers live on the corners only, so G1
+          ! (slave nodes x multipliers) is not square. The conditions (19)
+          ! bear on the corners with G1~(i, j) = integral of phi~_i psi_j,
+          ! phi~ the corners' linear hats (N_corner + N_mid/2, exactly):
+          ! F~ = G1~ lambda is the nodal force with each mid node's force
+          ! split equally between its corners, and G1~^-T g_w the corner
+          ! values of the gap's linear interpolant that has the same
+          ! weighted gaps; on full overlaps G1~ = tridiag(H/6, 2H/3, H/6)
+          ! (P1), as for a 2-node edge. The rows keep the full G1 (forces
+          ! on every slave node, the gap of the quadratic trace).
+          ! (doc/theory-contact-mortar.md, section 1, "The Q8 choice")
+          v = 0.0_wp
+          do t = 1, w%nadj(c)
+            k = w%adj_seg(t, c)
+            b = w%adj_loc(t, c)
+            v = v + sum(w%g1loc(b, 1:2, k)) + 0.5_wp*sum(w%g1loc(3, 1:2, k))
+          end do
+          cs%length(j) = v
+        end if
         call cs_finish_row(cs, xpred, du)
       end if
       call corner_rows_after(c)
@@ -451,10 +475,10 @@ contains
     end function row_normal
 
     !> Integral of psi_c over the whole of its slave segments, the weight
-    !> its multiplier has where its support faces the master: 1/2 of a
-    !> 2-node edge, 1/4 (corner) or 1/2 (mid node) of a 3-node edge, for P1
-    !> and P0 alike; chord lengths of the predicted positions (a threshold
-    !> only); axisymmetric: times 2 pi r at the segment's middle.
+    !> its multiplier has where its support faces the master: 1/2 of each
+    !> segment (2- and 3-node edges, P1 and P0 alike: corner multipliers);
+    !> chord lengths of the predicted positions (a threshold only);
+    !> axisymmetric: times 2 pi r at the segment's middle.
     real(wp) function full_weight(cc) result(wf)
       integer, intent(in) :: cc
       integer :: tt, kk
@@ -465,7 +489,6 @@ contains
         xa = xpred(:, slave%seg(1, kk))
         xb = xpred(:, slave%seg(2, kk))
         frac = 0.5_wp
-        if (nen == 3 .and. w%adj_loc(tt, cc) /= 3) frac = 0.25_wp
         if (slave%axisymmetric) frac = frac*pi*abs(xa(1) + xb(1))
         wf = wf + frac*norm2(xb - xa)
       end do
@@ -746,7 +769,8 @@ contains
         ! Nearest node of this segment that faces the master.
         target = 0
         best = huge(1.0_wp)
-        do bb = 1, nen
+        ! Corners only: a mid node carries no multiplier.
+        do bb = 1, 2
           if (bb == b .or. .not. w%covered(w%pos(bb, k))) cycle
           dist = abs(NODE_XI(bb) - NODE_XI(b))
           if (dist < best) then

@@ -6,13 +6,16 @@
 !> master segment), and the multiplier functions psi_j of M_h^1 and M_h^0
 !> (equations (8)-(11)) restricted to one slave segment.
 !>
-!> Multipliers live on the chain of ALL slave trace nodes (corners and, on
-!> 3-node edges, mid-side nodes). On a segment with parameter xi in [-1, 1]
-!> its chain nodes sit at xi = -1, +1 (and 0 for a 3-node edge):
-!>   P1: hats on the chain intervals ([-1, 1] for 2-node edges, [-1, 0] and
-!>       [0, 1] for 3-node edges);
-!>   P0: 1 on the dual cell of the node, bounded by the chain intervals'
-!>       midpoints z_i (xi = 0, or xi = -1/2 and +1/2).
+!> Multipliers live on the slave corner nodes (the segment ends); on
+!> 3-node (Q8) edges the mid-side nodes carry none (issue #16: a multiplier
+!> on every trace node made the Q8 stick traction zigzag from corner to mid
+!> node). On a segment with parameter xi in [-1, 1], corners at xi = -1, +1:
+!>   P1: psi_start = (1 - xi)/2, psi_end = (1 + xi)/2, linear over the
+!>       whole segment (2- and 3-node edges alike);
+!>   P0: psi_start = 1 on [-1, 0), psi_end = 1 on [0, 1], the dual cells of
+!>       the corner chain (bound z at the segment's parameter midpoint).
+!> On 3-node edges these are the classical lower-order multiplier spaces
+!> of quadratic mortar (one degree below the trace, inf-sup stable).
 module raccord_mortar_segments
   use raccord_kinds, only: wp
   use raccord_shape, only: shape_line
@@ -269,61 +272,43 @@ contains
     end subroutine eval
   end function bracketed_root
 
-  !> Interior discontinuities (P0) or kinks (P1 on 3-node edges) of the
-  !> multiplier functions on one segment, ascending: the mortar segments are
-  !> split there so that the Gauss rule sees polynomials.
+  !> Interior discontinuities of the multiplier functions on one segment
+  !> (P0: the jump at xi = 0, 2- and 3-node edges alike), ascending: the
+  !> mortar segments are split there so that the Gauss rule sees
+  !> polynomials. P1 is linear on the whole segment: no break.
   pure subroutine multiplier_breaks(nen, multiplier, nb, brk)
     integer, intent(in) :: nen, multiplier
     integer, intent(out) :: nb
     real(wp), intent(out) :: brk(2)
     brk = 0.0_wp
-    if (nen == 2) then
-      nb = merge(1, 0, multiplier == MULT_P0)
-    else if (multiplier == MULT_P0) then
-      nb = 2
-      brk = [-0.5_wp, 0.5_wp]
-    else
-      nb = 1
-    end if
+    nb = merge(1, 0, multiplier == MULT_P0 .and. nen >= 2)
   end subroutine multiplier_breaks
 
   !> psi(a) at xi of the multiplier of local node a (start, end, mid) on
-  !> one segment. At a break the right-hand value is taken; Gauss points
-  !> never sit on a break.
+  !> one segment: corner multipliers only, psi(3) = 0 on 3-node edges (the
+  !> mid node has no multiplier; see the module header). At a break the
+  !> right-hand value is taken; Gauss points never sit on a break.
+  !> For a 3-node edge of length H (straight, centred mid node) the edge
+  !> integrals of N_i psi_j, local order (start, end, mid), are
+  !>   P1: psi_start: (1, 0, 2) H/6     P0: psi_start: (5, -1, 8) H/24
+  !> (psi_end mirrors psi_start): the P1 corner block is diagonal.
   pure subroutine multiplier_basis(nen, multiplier, xi, psi)
     integer, intent(in) :: nen, multiplier
     real(wp), intent(in) :: xi
     real(wp), intent(out) :: psi(3)
     psi = 0.0_wp
+    if (nen < 2) return
     if (multiplier == MULT_P0) then
-      ! Dual cells [z_i, z_i+1] around each chain node (paper, W_h^0).
-      if (nen == 2) then
-        if (xi < 0.0_wp) then
-          psi(1) = 1.0_wp
-        else
-          psi(2) = 1.0_wp
-        end if
+      ! Dual cells [z_i, z_i+1] around each corner (paper, W_h^0).
+      if (xi < 0.0_wp) then
+        psi(1) = 1.0_wp
       else
-        if (xi < -0.5_wp) then
-          psi(1) = 1.0_wp
-        else if (xi > 0.5_wp) then
-          psi(2) = 1.0_wp
-        else
-          psi(3) = 1.0_wp
-        end if
+        psi(2) = 1.0_wp
       end if
     else
-      ! Hats on the chain intervals (paper, W_h^1).
-      if (nen == 2) then
-        psi(1) = 0.5_wp*(1.0_wp - xi)
-        psi(2) = 0.5_wp*(1.0_wp + xi)
-      else if (xi < 0.0_wp) then
-        psi(1) = -xi
-        psi(3) = 1.0_wp + xi
-      else
-        psi(2) = xi
-        psi(3) = 1.0_wp - xi
-      end if
+      ! Hats on the corner chain (paper, W_h^1).
+      psi(1) = 0.5_wp*(1.0_wp - xi)
+      psi(2) = 0.5_wp*(1.0_wp + xi)
     end if
   end subroutine multiplier_basis
 end module raccord_mortar_segments

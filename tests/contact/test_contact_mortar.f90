@@ -151,31 +151,34 @@ contains
     call g1_uniform(failure, MULT_P0, 0.75_wp, 0.125_wp, 0.375_wp, 0.125_wp)
   end subroutine test_g1_p0
 
-  !> Q8 slave edges of length H, multipliers on the chain of all trace
-  !> nodes (sub-intervals of length H/2). Edge matrices E(i, j) = integral
-  !> of N_i psi_j over one edge, by hand (local order start, end, mid; in
-  !> units of H/48):
-  !>   P1 hats:       psi_start: ( 7, -1,  6)  psi_mid: (2, 2, 20)
-  !>   P0 dual cells: psi_start: ( 8, -1,  5)  psi_mid: (1, 1, 22)
-  !> (psi_end mirrors psi_start). G1 is not symmetric: N_start is negative
-  !> on the far half of its edge while psi_start is not.
+  !> Q8 slave edges of length H, multipliers on the corner nodes only
+  !> (linear over each edge for P1, constant on its halves for P0; the mid
+  !> nodes carry none). Edge matrices E(i, j) = integral of N_i psi_j over
+  !> one edge, by hand (local order start, end, mid; in units of H/48):
+  !>   P1: psi_start: ( 8,  0, 16)     P0: psi_start: (10, -2, 16)
+  !> (psi_end mirrors psi_start, psi_mid = 0): the P1 corner block is
+  !> diagonal. The conditions take G1~ of the corners' linear hats
+  !> N_corner + N_mid/2 (raccord_mortar, assemble_rows), which on a full
+  !> overlap is that of a 2-node chain of spacing H: tridiag(H/6, 2H/3,
+  !> H/6), ends H/3 (P1); tridiag(H/8, 3H/4, H/8), ends 3H/8 (P0).
   subroutine test_g1_q8(failure)
     type(failure_t), allocatable, intent(out) :: failure
-    real(wp), parameter :: p1(3, 3) = reshape([7, -1, 6, -1, 7, 6, 2, 2, 20], [3, 3])/48.0_wp
-    real(wp), parameter :: p0(3, 3) = reshape([8, -1, 5, -1, 8, 5, 1, 1, 22], [3, 3])/48.0_wp
+    real(wp), parameter :: p1(3, 3) = reshape([8, 0, 16, 0, 8, 16, 0, 0, 0], [3, 3])/48.0_wp
+    real(wp), parameter :: p0(3, 3) = reshape([10, -2, 16, -2, 10, 16, 0, 0, 0], [3, 3])/48.0_wp
     integer, parameter :: mults(2) = [MULT_P1, MULT_P0]
     type(mesh_t) :: mesh
     type(contact_surface_t) :: slave, master
     type(constraint_set_t) :: cs
     real(wp), allocatable :: g1(:,:), expect(:,:)
-    real(wp) :: h, worst, edge(3, 3)
+    real(wp) :: h, worst, edge(3, 3), v
     integer :: im, k, a, b, pos(3), j, d
     worst = 0.0_wp
     h = 0.2_wp
     do im = 1, 2
       call coupling(ELEM_Q8, mults(im), 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure)
       if (allocated(failure)) return
-      call check(failure, cs%m == slave%nnode, 'every slave node should carry a multiplier')
+      call check(failure, cs%m == 6 .and. all(mod(cs%snode(1:cs%m), 2) == 1), &
+        'every corner and no mid node should carry a multiplier')
       if (allocated(failure)) return
       edge = merge(p1, p0, mults(im) == MULT_P1)
       allocate(expect(slave%nnode, slave%nnode), source=0.0_wp)
@@ -190,14 +193,23 @@ contains
       call g1_matrix(slave, cs, g1)
       worst = max(worst, maxval(abs(g1 - expect))/h)
       call check(failure, maxval(abs(g1 - expect)) <= 1.0e-13_wp*h, 'Q8 G1 differs from the edge matrices')
-      ! Band storage, half bandwidth 2 (corner to corner across an edge).
+      ! The conditions' G1~ (band storage, half bandwidth 1 between corners).
       do j = 1, cs%m
         do d = -2, 2
           if (j + d < 1 .or. j + d > cs%m) cycle
-          call check_close(failure, cs%g1(d, j), g1(j + d, j), 'band storage g1(d, j)', abs_tol=1.0e-15_wp)
+          if (d == 0) then
+            v = merge(merge(1.0_wp/3.0_wp, 3.0_wp/8.0_wp, mults(im) == MULT_P1), &
+              merge(2.0_wp/3.0_wp, 3.0_wp/4.0_wp, mults(im) == MULT_P1), j == 1 .or. j == cs%m)
+          else if (abs(d) == 1) then
+            v = merge(1.0_wp/6.0_wp, 1.0_wp/8.0_wp, mults(im) == MULT_P1)
+          else
+            v = 0.0_wp
+          end if
+          worst = max(worst, abs(cs%g1(d, j) - v*h)/h)
+          call check_close(failure, cs%g1(d, j), v*h, 'G1~ of the corner hats, g1(d, j)', abs_tol=1.0e-15_wp)
         end do
       end do
-      call check(failure, cs%g1_band == 2, 'G1 of 3-node edges has half bandwidth 2')
+      call check(failure, cs%g1_band == 1, 'G1~ of 3-node edges has half bandwidth 1 (corner to corner)')
       deallocate(expect)
       if (allocated(failure)) return
     end do
@@ -280,7 +292,9 @@ contains
       do im = 1, 2
         call coupling(etypes(ie), mults(im), 4, 4, 0.0_wp, 1.0_wp, 0.0_wp, mesh, slave, master, cs, failure)
         if (allocated(failure)) return
-        call check(failure, cs%m == slave%nnode, 'every slave node should carry a multiplier')
+        ! Q8: the corners only (mid nodes carry no multiplier).
+        call check(failure, cs%m == merge(slave%nnode, (slave%nnode + 1)/2, etypes(ie) == ELEM_Q4), &
+          'every slave corner should carry a multiplier')
         if (allocated(failure)) return
         call g1_matrix(slave, cs, g1)
         allocate(g21(slave%nnode, slave%nnode), source=0.0_wp)
