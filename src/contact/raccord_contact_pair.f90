@@ -138,6 +138,10 @@ contains
         pair%multiplier = spec%multiplier
         pair%weighted = spec%weighted
         pair%mortar%weighted = spec%weighted
+        ! Q8 slave edges with friction and the paper's conditions: corner
+        ! multipliers, or the stick traction zigzags (issue #16;
+        ! doc/theory-contact-mortar.md section 1)
+        pair%mortar%corners = spec%friction > 0.0_wp .and. .not. spec%weighted
         pair%mu = spec%friction
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance
@@ -382,7 +386,7 @@ contains
       if (pair%st_c(j) /= ST_OPEN) pair%nactive = pair%nactive + 1
       if (pair%st_c(j) == ST_SLIP) pair%nslip = pair%nslip + 1
     end do
-    if (pair%method == METHOD_MORTAR .and. pair%slave%nen_seg == 3) call mid_node_values(pair)
+    if (pair%method == METHOD_MORTAR .and. pair%slave%nen_seg == 3 .and. pair%mortar%corners) call mid_node_values(pair)
     ! Resultant on the slave: fc is zero off the touched nodes, so the sum
     ! in chain order over the span of the touched slave nodes is the sum
     ! over the whole surface, term for term.
@@ -405,7 +409,8 @@ contains
   end subroutine enforce_pair
 
   !> Mortar on 3-node slave edges: the multipliers live on the corners
-  !> (raccord_mortar_segments), so a mid node has no constraint of its own.
+  !> with friction and the paper's conditions (raccord_mortar_segments), so
+  !> a mid node has no constraint of its own.
   !> Its per-node results are the multiplier field at its point, the mean
   !> of its two corners' values (P1: linear along the edge; P0: the two
   !> cells meet there), a corner without a constraint counting 0; its

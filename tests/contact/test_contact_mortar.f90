@@ -33,6 +33,8 @@ program test_contact_mortar
     new_test('G1 on a uniform slave mesh: tridiag(h/6, 2h/3, h/6) for P1 (Q4)', test_g1_p1), &
     new_test('G1 on a uniform slave mesh: tridiag(h/8, 3h/4, h/8) for P0 (Q4)', test_g1_p0), &
     new_test('G1 on a uniform Q8 slave mesh: hand-integrated edge matrices, P1 and P0', test_g1_q8), &
+    new_test('G1 on a uniform Q8 slave mesh, corner multipliers: edge matrices and G1~, P1 and P0', &
+      test_g1_q8_corners), &
     new_test('G21 reproduces 1 and x on non-matching meshes (Q4, Q8; P1, P0)', test_g21_reproduces), &
     new_test('G21 equals G1 on matching meshes (Q4, Q8; P1, P0)', test_g21_matching), &
     new_test('dual multipliers are refused with a message', test_refusals), &
@@ -50,13 +52,14 @@ contains
   !> Upper block 'b' (slave: its bottom) over lower block 'a' (master: its
   !> top), built in memory; G1 and G21 read back from the constraint rows in
   !> chain numbering of the slave and global numbering of the master.
-  subroutine coupling(etype, mult, ns, nm, xm0, lm, gap, mesh, slave, master, cs, failure)
+  subroutine coupling(etype, mult, ns, nm, xm0, lm, gap, mesh, slave, master, cs, failure, corners)
     integer, intent(in) :: etype, mult, ns, nm
     real(wp), intent(in) :: xm0, lm, gap
     type(mesh_t), intent(out) :: mesh
     type(contact_surface_t), intent(out) :: slave, master
     type(constraint_set_t), intent(out) :: cs
     type(failure_t), allocatable, intent(inout) :: failure
+    logical, intent(in), optional :: corners   !< Q8: multipliers on the corners only
     type(mesh_t) :: ma, mb
     type(mortar_work_t) :: w
     type(verlet_t) :: verlet
@@ -72,6 +75,7 @@ contains
       call check(failure, .false., 'setup failed: ' // err%message)
       return
     end if
+    if (present(corners)) w%corners = corners
     allocate(du(2, mesh%nnode), source=0.0_wp)
     call verlet_init(verlet, slave, master, .true., 0.25_wp)
     call build_mortar(slave, master, mesh%x, mesh%x, du, 0.25_wp, mult, verlet, cs, w)
@@ -151,7 +155,61 @@ contains
     call g1_uniform(failure, MULT_P0, 0.75_wp, 0.125_wp, 0.375_wp, 0.125_wp)
   end subroutine test_g1_p0
 
-  !> Q8 slave edges of length H, multipliers on the corner nodes only
+  !> Q8 slave edges of length H, multipliers on the chain of all trace
+  !> nodes (sub-intervals of length H/2). Edge matrices E(i, j) = integral
+  !> of N_i psi_j over one edge, by hand (local order start, end, mid; in
+  !> units of H/48):
+  !>   P1 hats:       psi_start: ( 7, -1,  6)  psi_mid: (2, 2, 20)
+  !>   P0 dual cells: psi_start: ( 8, -1,  5)  psi_mid: (1, 1, 22)
+  !> (psi_end mirrors psi_start). G1 is not symmetric: N_start is negative
+  !> on the far half of its edge while psi_start is not.
+  subroutine test_g1_q8(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp), parameter :: p1(3, 3) = reshape([7, -1, 6, -1, 7, 6, 2, 2, 20], [3, 3])/48.0_wp
+    real(wp), parameter :: p0(3, 3) = reshape([8, -1, 5, -1, 8, 5, 1, 1, 22], [3, 3])/48.0_wp
+    integer, parameter :: mults(2) = [MULT_P1, MULT_P0]
+    type(mesh_t) :: mesh
+    type(contact_surface_t) :: slave, master
+    type(constraint_set_t) :: cs
+    real(wp), allocatable :: g1(:,:), expect(:,:)
+    real(wp) :: h, worst, edge(3, 3)
+    integer :: im, k, a, b, pos(3), j, d
+    worst = 0.0_wp
+    h = 0.2_wp
+    do im = 1, 2
+      call coupling(ELEM_Q8, mults(im), 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure)
+      if (allocated(failure)) return
+      call check(failure, cs%m == slave%nnode, 'every slave node should carry a multiplier')
+      if (allocated(failure)) return
+      edge = merge(p1, p0, mults(im) == MULT_P1)
+      allocate(expect(slave%nnode, slave%nnode), source=0.0_wp)
+      do k = 1, 5
+        pos = [2*k - 1, 2*k + 1, 2*k]
+        do b = 1, 3
+          do a = 1, 3
+            expect(pos(a), pos(b)) = expect(pos(a), pos(b)) + edge(a, b)*h
+          end do
+        end do
+      end do
+      call g1_matrix(slave, cs, g1)
+      worst = max(worst, maxval(abs(g1 - expect))/h)
+      call check(failure, maxval(abs(g1 - expect)) <= 1.0e-13_wp*h, 'Q8 G1 differs from the edge matrices')
+      ! Band storage, half bandwidth 2 (corner to corner across an edge).
+      do j = 1, cs%m
+        do d = -2, 2
+          if (j + d < 1 .or. j + d > cs%m) cycle
+          call check_close(failure, cs%g1(d, j), g1(j + d, j), 'band storage g1(d, j)', abs_tol=1.0e-15_wp)
+        end do
+      end do
+      call check(failure, cs%g1_band == 2, 'G1 of 3-node edges has half bandwidth 2')
+      deallocate(expect)
+      if (allocated(failure)) return
+    end do
+    write(*, '(a,es10.3)') '        max |G1 - edge matrices| / H = ', worst
+  end subroutine test_g1_q8
+
+  !> Q8 slave edges of length H, multipliers on the corner nodes only (the
+  !> space of friction with the paper's conditions, mortar_work_t%corners)
   !> (linear over each edge for P1, constant on its halves for P0; the mid
   !> nodes carry none). Edge matrices E(i, j) = integral of N_i psi_j over
   !> one edge, by hand (local order start, end, mid; in units of H/48):
@@ -161,7 +219,7 @@ contains
   !> N_corner + N_mid/2 (raccord_mortar, assemble_rows), which on a full
   !> overlap is that of a 2-node chain of spacing H: tridiag(H/6, 2H/3,
   !> H/6), ends H/3 (P1); tridiag(H/8, 3H/4, H/8), ends 3H/8 (P0).
-  subroutine test_g1_q8(failure)
+  subroutine test_g1_q8_corners(failure)
     type(failure_t), allocatable, intent(out) :: failure
     real(wp), parameter :: p1(3, 3) = reshape([8, 0, 16, 0, 8, 16, 0, 0, 0], [3, 3])/48.0_wp
     real(wp), parameter :: p0(3, 3) = reshape([10, -2, 16, -2, 10, 16, 0, 0, 0], [3, 3])/48.0_wp
@@ -175,7 +233,7 @@ contains
     worst = 0.0_wp
     h = 0.2_wp
     do im = 1, 2
-      call coupling(ELEM_Q8, mults(im), 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure)
+      call coupling(ELEM_Q8, mults(im), 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure, corners=.true.)
       if (allocated(failure)) return
       call check(failure, cs%m == 6 .and. all(mod(cs%snode(1:cs%m), 2) == 1), &
         'every corner and no mid node should carry a multiplier')
@@ -214,7 +272,7 @@ contains
       if (allocated(failure)) return
     end do
     write(*, '(a,es10.3)') '        max |G1 - edge matrices| / H = ', worst
-  end subroutine test_g1_q8
+  end subroutine test_g1_q8_corners
 
   !> sum_a G21(a, j) f(x_a) = sum_i G1(i, j) f(x_i) for f = 1 and f = x: the
   !> traces of both sides reproduce linear fields, and both sums are the
@@ -292,9 +350,7 @@ contains
       do im = 1, 2
         call coupling(etypes(ie), mults(im), 4, 4, 0.0_wp, 1.0_wp, 0.0_wp, mesh, slave, master, cs, failure)
         if (allocated(failure)) return
-        ! Q8: the corners only (mid nodes carry no multiplier).
-        call check(failure, cs%m == merge(slave%nnode, (slave%nnode + 1)/2, etypes(ie) == ELEM_Q4), &
-          'every slave corner should carry a multiplier')
+        call check(failure, cs%m == slave%nnode, 'every slave node should carry a multiplier')
         if (allocated(failure)) return
         call g1_matrix(slave, cs, g1)
         allocate(g21(slave%nnode, slave%nnode), source=0.0_wp)
