@@ -40,6 +40,8 @@ program test_contact_mortar
     new_test('dual multipliers are refused with a message', test_refusals), &
     new_test('patch test, non-matching Q4 (slave 3 graded, master 11): P1 and P0 uniform', test_patch_q4), &
     new_test('patch test, non-matching Q8 (slave 2 graded, master 7): P1 and P0 uniform', test_patch_q8), &
+    new_test('patch test, non-matching Q8, corner multipliers (the space with friction): P1 and P0 uniform', &
+      test_patch_q8_corners), &
     new_test('patch test, fine side as slave (Q4 P1 and P0, slave 11, master 3 graded)', test_patch_fine_slave), &
     new_test('P0 against P1 under a load patch (smooth non-uniform pressure)', test_p0_vs_p1), &
     new_test('two bars impact, matching ends (P1): no penetration, momentum, 2L/c', test_impact_matching), &
@@ -441,12 +443,14 @@ contains
   !> graded block is the upper one; `slave_upper` says which block is slave.
   !> Returns the largest |lambda - mean|/p (mortar) or |pressure - mean|/p
   !> (node-to-segment).
-  subroutine patch_case(failure, etype, na, nb, method, mult, slave_upper, err_rel, weighted)
+  subroutine patch_case(failure, etype, na, nb, method, mult, slave_upper, err_rel, weighted, corners)
     type(failure_t), allocatable, intent(inout) :: failure
     integer, intent(in) :: etype, na, nb, method, mult
     logical, intent(in) :: slave_upper
     !> mortar conditions = 'weighted' (default 'nodal')
     logical, intent(in), optional :: weighted
+    !> Q8: corner multipliers (the space of pairs with friction) forced
+    logical, intent(in), optional :: corners
     real(wp), intent(out) :: err_rel
     real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp, p = 1.0_wp
     type(mesh_t) :: ma, mb, mesh
@@ -481,6 +485,7 @@ contains
     if (present(weighted)) scene%contacts(1)%weighted = weighted
     call prepare(scene, mesh, model, pairs, plan, state, failure)
     if (allocated(failure)) return
+    if (present(corners)) pairs(1)%mortar%corners = corners
     bal_max = 0.0_wp
     do
       call contact_step(model, pairs, state, err)
@@ -549,6 +554,22 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call patch_trio(failure, ELEM_Q8, 7, 2)
   end subroutine test_patch_q8
+
+  !> The Q8 patch test with the corner multipliers of pairs with friction
+  !> (issue #16; forced here on the frictionless case, whose exact solution
+  !> is the uniform pressure): P1 and P0 uniform, every node closed (mid
+  !> nodes show the mean of their corners).
+  subroutine test_patch_q8_corners(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp) :: e1, e0
+    call patch_case(failure, ELEM_Q8, 7, 2, METHOD_MORTAR, MULT_P1, .true., e1, corners=.true.)
+    if (allocated(failure)) return
+    call patch_case(failure, ELEM_Q8, 7, 2, METHOD_MORTAR, MULT_P0, .true., e0, corners=.true.)
+    if (allocated(failure)) return
+    write(*, '(a,es10.3,a,es10.3)') '        corner multipliers: max |lambda - mean|/p: mortar P1 ', e1, ', mortar P0 ', e0
+    call check(failure, e1 <= 1.0e-8_wp, 'corner multipliers: mortar P1 multipliers not uniform')
+    call check(failure, e0 <= 1.0e-8_wp, 'corner multipliers: mortar P0 multipliers not uniform')
+  end subroutine test_patch_q8_corners
 
   subroutine test_patch_fine_slave(failure)
     type(failure_t), allocatable, intent(out) :: failure
