@@ -1,20 +1,14 @@
 #!/bin/sh
-# Check of the Q8 stick traction of Fig. 4(b) (issue #16 item 3;
-# doc/reproduction.md "Fig. 4(b)" and "The Q8 stick zigzag"). Until the
-# multipliers of 3-node slave edges moved to the corner nodes (linear over
-# each edge for P1, constant on its halves for P0), the stick traction
-# zigzagged from corner to mid node by 0.21 (P1) of its peak here; this
-# script measured that and now shows it gone. From the shipped deck
-# input/paper/fig4b_q8_mortar_p1_mu020.nml it writes four variants, runs
-# them and the two shipped Fig. 4(b) decks, and prints the figures the doc
-# quotes:
+# Diagnostic of the Q8 stick-traction zigzag of Fig. 4(b) (issue #16 item 3;
+# doc/reproduction.md "Fig. 4(b)", doc/theory-contact.md section 6). From
+# the shipped deck input/paper/fig4b_q8_mortar_p1_mu020.nml it writes four
+# variants, runs them and prints the figures the doc quotes:
 #   q8        mu = 0.5 (the whole zone sticks at t = T), disc damped as in
 #             the Fig. 3 decks (alpha = 1e7 1/s), so no ringing is frozen in
 #   q4        the same on paper_q4.msh: Q4 with the same node spacing on
 #             the block top (0.02 mm) and the same disc arc spacing
 #   q8_dense  q8 stopped at T with 400 frames (one every 5e-8 s)
 #   q8_p0     q8 with P0 multipliers
-#   fig4b_p1, fig4b_p0  the Fig. 4(b) decks as shipped (mu = 0.2)
 # Measures at t = T over the stick core (pressure >= 0.6 of its peak,
 # |shear| <= 0.95 mu pressure; windows of five nodes):
 #   zigzag   max |fourth difference of lam_t| / 16 over max |lam_t| (as
@@ -27,15 +21,15 @@
 #            the nodes at least three node spacings (0.06 mm) inside the
 #            stick front of t_k, over max |lam_t(T)|: what the stick zone
 #            adds after the front has passed, against lam_t(t_k) itself.
-# (A mid node's lam_t is the multiplier field there, the mean of its
-# corners'; a zigzag of the corners shows in the measure all the same.)
 #
 #   sh postproc/paper/q8-stick.sh EXE [WORKDIR] [--check]
 #
 # EXE is a (Release) raccord; about 1-2 minutes on one core. With --check
-# (CTest `paper_stick_q8`, slow) it exits 1 unless every zigzag above (Q8
-# P1 and P0, mu = 0.5 and the shipped mu = 0.2 decks, the Q4 twin) and the
-# increments after the front stay below 0.02, the issue's bound.
+# (CTest `paper_stick_q8`, slow) it exits 1 unless the diagnosis still
+# holds: the Q4 twin smooth (zigzag < 0.02), what the Q8 stick zone adds
+# after the front has passed smooth (< 0.02), and the Q8 P1 zigzag itself
+# above 0.1 (the defect of doc/reproduction.md; when a fix removes it, this
+# check says so and the doc and the check are to be updated).
 # POSIX sh + awk.
 set -eu
 exe=$1
@@ -60,16 +54,10 @@ variant q8 paper_q8.msh P1 4.0e-05 40
 variant q4 paper_q4.msh P1 4.0e-05 40
 variant q8_p0 paper_q8.msh P0 4.0e-05 40
 variant q8_dense paper_q8.msh P1 2.0e-05 400
-for d in p1 p0; do
-  sed -e "s|file = 'paper_q8.msh'|file = '$src/paper_q8.msh'|" -e "s/t_end = 4.0e-05/t_end = 2.0e-05/" \
-      -e "s/frames = 40/frames = 20/" "$src/fig4b_q8_mortar_${d}_mu020.nml" > "$work/fig4b_$d.nml"
-  "$exe" --quiet --output "$work/fig4b_$d" "$work/fig4b_$d.nml" > "$work/fig4b_$d.out" 2>&1 \
-    || { echo "q8-stick: fig4b_$d failed, see $work/fig4b_$d.out" >&2; exit 1; }
-done
 
-# measures FILE FRAME NAME MU: zigzag, shear zigzag and ux_alt at frame FRAME
+# measures FILE FRAME: zigzag, shear zigzag and ux_alt at frame FRAME
 measures() {
-  awk -v fr="$2" -v name="$3" -v mu="$4" '
+  awk -v fr="$2" -v name="$3" '
     /^# frame/ { f = $3; i = 0; next } /^#/ || NF < 10 { next }
     f == 0 { i++; x0[i] = $2; next }
     f == fr { i++; n = i; x[i] = $2; p[i] = $5; sh[i] = $6; lt[i] = $10 }
@@ -78,7 +66,7 @@ measures() {
     END {
       pm = 0; tm = 0
       for (i = 1; i <= n; i++) { if (p[i] > pm) pm = p[i]; if (ab(lt[i]) > tm) tm = ab(lt[i]); u[i] = x[i] - x0[i] }
-      for (i = 1; i <= n; i++) core[i] = (p[i] >= 0.6 * pm && ab(sh[i]) <= 0.95 * mu * p[i])
+      for (i = 1; i <= n; i++) core[i] = (p[i] >= 0.6 * pm && ab(sh[i]) <= 0.95 * 0.5 * p[i])
       z = 0; zs = 0; za = 0
       for (i = 3; i <= n - 2; i++) {
         if (!(core[i-2] && core[i-1] && core[i] && core[i+1] && core[i+2])) continue
@@ -93,12 +81,9 @@ measures() {
 sum=$work/summary.txt
 {
 echo "# Q8 stick traction at t = T, mu = 0.5, disc damped (postproc/paper/q8-stick.sh)"
-measures "$work/q8/q8.contact1.txt" 20 q8 0.5
-measures "$work/q8_p0/q8_p0.contact1.txt" 20 q8_p0 0.5
-measures "$work/q4/q4.contact1.txt" 20 q4 0.5
-echo "# the Fig. 4(b) decks as shipped (mu = 0.2, disc undamped), t = T"
-measures "$work/fig4b_p1/fig4b_p1.contact1.txt" 20 fig4b_p1 0.2
-measures "$work/fig4b_p0/fig4b_p0.contact1.txt" 20 fig4b_p0 0.2
+measures "$work/q8/q8.contact1.txt" 20 q8
+measures "$work/q8_p0/q8_p0.contact1.txt" 20 q8_p0
+measures "$work/q4/q4.contact1.txt" 20 q4
 
 echo "# what the stick zone adds after the front has passed (dense run, T = frame 400)"
 for k in 200 240 280 320; do
@@ -127,17 +112,13 @@ done
 cat "$sum"
 [ "$check" = "--check" ] || exit 0
 awk '
-  $1 ~ /^(q8|q8_p0|q4|fig4b_p1|fig4b_p0)$/ { z[$1] = $7 }
+  $1 == "q8" { q8 = $7 } $1 == "q4" { q4 = $7 }
   $1 == "t_k" { n++; if ($10 + 0 > inc) inc = $10 + 0 }
   END {
     bad = 0
-    split("q8 q8_p0 q4 fig4b_p1 fig4b_p0", names, " ")
-    for (k = 1; k <= 5; k++) {
-      v = z[names[k]]
-      if (v == "" || v + 0 >= 0.02) { print "FAIL  " names[k] " zigzag " v " (expected < 0.02)"; bad = 1 }
-    }
+    if (q4 == "" || q4 + 0 >= 0.02) { print "FAIL  Q4 twin zigzag " q4 " (expected < 0.02)"; bad = 1 }
     if (n != 4 || inc >= 0.02) { print "FAIL  increments after the front " inc " (expected < 0.02 at 4 times)"; bad = 1 }
-    if (!bad) printf "pass  zigzag < 0.02: Q8 P1 %s, P0 %s (mu = 0.5), Fig. 4(b) P1 %s, P0 %s (mu = 0.2), Q4 twin %s; increments after the front %s\n", \
-      z["q8"], z["q8_p0"], z["fig4b_p1"], z["fig4b_p0"], z["q4"], inc
+    if (q8 == "" || q8 + 0 <= 0.1) { print "FAIL  Q8 P1 zigzag " q8 ": no longer above 0.1; if fixed, update doc/reproduction.md (Fig. 4(b)) and this check"; bad = 1 }
+    if (!bad) print "pass  Q4 twin " q4 " < 0.02, increments after the front " inc " < 0.02, Q8 P1 " q8 " > 0.1 (the known defect)"
     exit bad
   }' "$sum"

@@ -138,10 +138,10 @@ contains
         pair%multiplier = spec%multiplier
         pair%weighted = spec%weighted
         pair%mortar%weighted = spec%weighted
-        ! Q8 slave edges with friction and the paper's conditions: corner
-        ! multipliers, or the stick traction zigzags (issue #16;
-        ! doc/theory-contact-mortar.md section 1)
-        pair%mortar%corners = spec%friction > 0.0_wp .and. .not. spec%weighted
+        ! Q8 corner multipliers (pair%mortar%corners) are not selected by
+        ! any deck: they remove the Fig. 4(b) stick zigzag but gave energy
+        ! on curved frictional and weighted cases (issue #16;
+        ! doc/theory-contact-mortar.md section 1). Default: every trace node.
         pair%mu = spec%friction
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance

@@ -2,8 +2,8 @@
 !> (8)-(19); method brief section 5; doc/theory-contact-mortar.md).
 !>
 !> One constraint per slave chain node j whose multiplier psi_j meets the
-!> master (with friction and the paper's conditions the mid nodes of 3-node
-!> edges carry none; raccord_mortar_segments):
+!> master (with mortar_work_t%corners the mid nodes of 3-node edges carry
+!> none; raccord_mortar_segments):
 !> its row holds -G1(i, j) on slave nodes i and +G21(a, j) on master
 !> nodes a, with (paper, after (15) and (16))
 !>   G1(i, j)  = integral of phi_i psi_j dGamma,   G21(a, j) = integral of phi_a psi_j dGamma,
@@ -74,9 +74,9 @@ module raccord_mortar
     !> and each multiplier against its own weighted gap (cs%weighted);
     !> otherwise the paper's rows along the slave's nodal normal and (19)
     logical :: weighted = .false.
-    !> 3-node slave edges: multipliers on the corners only (raccord_mortar_segments),
-    !> set by the pair for friction with the paper's conditions; otherwise
-    !> one on every trace node
+    !> 3-node slave edges: multipliers on the corners only (raccord_mortar_segments;
+    !> no deck selects it yet, doc/theory-contact-mortar.md section 1);
+    !> otherwise one on every trace node
     logical :: corners = .false.
     integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
     integer, allocatable :: nadj(:)           !< (nnode) segments a chain node belongs to (1 or 2)

@@ -7,11 +7,11 @@
 !> (equations (8)-(11)) restricted to one slave segment.
 !>
 !> Multipliers live on the slave corner nodes (the segment ends) and, on
-!> 3-node (Q8) edges, on the mid-side nodes too, except with friction and
-!> the paper's conditions (`corners`: issue #16, a multiplier on every trace
-!> node made the Q8 stick traction zigzag from corner to mid node). On a
-!> segment with parameter xi in [-1, 1], corners at xi = -1, +1, corner
-!> space:
+!> 3-node (Q8) edges, on the mid-side nodes too, unless `corners` (issue
+!> #16: a multiplier on every trace node makes the Q8 stick traction zigzag
+!> from corner to mid node; the corner space removes it but gave energy on
+!> curved frictional cases, so no deck selects it yet). On a segment with
+!> parameter xi in [-1, 1], corners at xi = -1, +1, corner space:
 !>   P1: psi_start = (1 - xi)/2, psi_end = (1 + xi)/2, linear over the
 !>       whole segment (2- and 3-node edges alike);
 !>   P0: psi_start = 1 on [-1, 0), psi_end = 1 on [0, 1], the dual cells of
@@ -19,11 +19,8 @@
 !> On 3-node edges these are the lower-order multiplier spaces of
 !> quadratic mortar (one degree below the trace, inf-sup stable). Without
 !> `corners` a 3-node edge has a multiplier on every trace node: hats on
-!> [-1, 0] and [0, 1], P0 cells bounded at xi = -1/2, +1/2 (frictionless
-!> contact and conditions = 'weighted': on a curved slave one row normal
-!> over a corner's two edges tilts the mid nodes' forces, and the weighted
-!> conditions need the gap near zero pointwise; doc/theory-contact-mortar.md,
-!> section 1).
+!> [-1, 0] and [0, 1], P0 cells bounded at xi = -1/2, +1/2 (the default;
+!> doc/theory-contact-mortar.md, section 1).
 module raccord_mortar_segments
   use raccord_kinds, only: wp
   use raccord_shape, only: shape_line
@@ -304,8 +301,8 @@ contains
   !> psi(a) at xi of the multiplier of local node a (start, end, mid) on
   !> one segment. At a break the right-hand value is taken; Gauss points
   !> never sit on a break. On 3-node edges `corners` selects the corner
-  !> space (psi(3) = 0: the mid node has no multiplier; friction with the
-  !> paper's conditions, see the module header), otherwise a multiplier on
+  !> space (psi(3) = 0: the mid node has no multiplier; see the module
+  !> header), otherwise a multiplier on
   !> every trace node (hats on [-1, 0] and [0, 1]; P0 cells bounded at
   !> xi = -1/2, +1/2). For a 3-node edge of length
   !> H (straight, centred mid node) the corner space's edge integrals of

@@ -40,7 +40,7 @@ program test_contact_mortar
     new_test('dual multipliers are refused with a message', test_refusals), &
     new_test('patch test, non-matching Q4 (slave 3 graded, master 11): P1 and P0 uniform', test_patch_q4), &
     new_test('patch test, non-matching Q8 (slave 2 graded, master 7): P1 and P0 uniform', test_patch_q8), &
-    new_test('patch test, non-matching Q8, corner multipliers (the space with friction): P1 and P0 uniform', &
+    new_test('patch test, non-matching Q8, corner multipliers: P1 and P0 uniform', &
       test_patch_q8_corners), &
     new_test('patch test, fine side as slave (Q4 P1 and P0, slave 11, master 3 graded)', test_patch_fine_slave), &
     new_test('P0 against P1 under a load patch (smooth non-uniform pressure)', test_p0_vs_p1), &
@@ -210,8 +210,8 @@ contains
     write(*, '(a,es10.3)') '        max |G1 - edge matrices| / H = ', worst
   end subroutine test_g1_q8
 
-  !> Q8 slave edges of length H, multipliers on the corner nodes only (the
-  !> space of friction with the paper's conditions, mortar_work_t%corners)
+  !> Q8 slave edges of length H, multipliers on the corner nodes only
+  !> (mortar_work_t%corners, issue #16)
   !> (linear over each edge for P1, constant on its halves for P0; the mid
   !> nodes carry none). Edge matrices E(i, j) = integral of N_i psi_j over
   !> one edge, by hand (local order start, end, mid; in units of H/48):
@@ -449,7 +449,7 @@ contains
     logical, intent(in) :: slave_upper
     !> mortar conditions = 'weighted' (default 'nodal')
     logical, intent(in), optional :: weighted
-    !> Q8: corner multipliers (the space of pairs with friction) forced
+    !> Q8: corner multipliers (mortar_work_t%corners) forced
     logical, intent(in), optional :: corners
     real(wp), intent(out) :: err_rel
     real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp, p = 1.0_wp
@@ -555,10 +555,10 @@ contains
     call patch_trio(failure, ELEM_Q8, 7, 2)
   end subroutine test_patch_q8
 
-  !> The Q8 patch test with the corner multipliers of pairs with friction
-  !> (issue #16; forced here on the frictionless case, whose exact solution
-  !> is the uniform pressure): P1 and P0 uniform, every node closed (mid
-  !> nodes show the mean of their corners).
+  !> The Q8 patch test with corner multipliers (mortar_work_t%corners,
+  !> issue #16; set on the pair after prepare: no deck selects them): P1 and
+  !> P0 uniform, every node closed (mid nodes show the mean of their
+  !> corners).
   subroutine test_patch_q8_corners(failure)
     type(failure_t), allocatable, intent(out) :: failure
     real(wp) :: e1, e0
