@@ -138,6 +138,10 @@ contains
         pair%multiplier = spec%multiplier
         pair%weighted = spec%weighted
         pair%mortar%weighted = spec%weighted
+        ! Q8 corner multipliers (pair%mortar%corners) are not selected by
+        ! any deck: they remove the Fig. 4(b) stick zigzag but gave energy
+        ! on curved frictional and weighted cases (issue #16;
+        ! doc/theory-contact-mortar.md section 1). Default: every trace node.
         pair%mu = spec%friction
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance
@@ -382,6 +386,7 @@ contains
       if (pair%st_c(j) /= ST_OPEN) pair%nactive = pair%nactive + 1
       if (pair%st_c(j) == ST_SLIP) pair%nslip = pair%nslip + 1
     end do
+    if (pair%method == METHOD_MORTAR .and. pair%slave%nen_seg == 3 .and. pair%mortar%corners) call mid_node_values(pair)
     ! Resultant on the slave: fc is zero off the touched nodes, so the sum
     ! in chain order over the span of the touched slave nodes is the sum
     ! over the whole surface, term for term.
@@ -402,6 +407,79 @@ contains
       end do
     end subroutine load_nodes
   end subroutine enforce_pair
+
+  !> Mortar on 3-node slave edges: the multipliers live on the corners
+  !> with friction and the paper's conditions (raccord_mortar_segments), so
+  !> a mid node has no constraint of its own.
+  !> Its per-node results are the multiplier field at its point, the mean
+  !> of its two corners' values (P1: linear along the edge; P0: the two
+  !> cells meet there), a corner without a constraint counting 0; its
+  !> status is its corners' common status, stick and slip giving slip, an
+  !> open corner giving the other's (the edge is in contact on that side);
+  !> its gap the corners' mean where both are set. Output only: no
+  !> condition bears on the mid node, and its status is not read back.
+  subroutine mid_node_values(pair)
+    type(contact_pair_t), intent(inout) :: pair
+    integer :: j, c, t, k, cm, ca, cb, nmid, ns
+    logical :: sa, sb
+    nmid = pair%nset
+    ns = pair%slave%nseg
+    ! Over the corners set this step (chain position c = 2k - 1 starts
+    ! segment k, c = 2k + 1 ends it): each mid node next to one, once.
+    do j = 1, nmid
+      c = pair%set_node(j)
+      do t = 1, 2
+        if (t == 1) then
+          k = (c - 1)/2
+          if (k < 1 .and. pair%slave%closed) k = ns
+        else
+          k = (c + 1)/2
+        end if
+        if (k < 1 .or. k > ns) cycle
+        cm = 2*k
+        ca = 2*k - 1
+        cb = 2*k + 1
+        if (pair%slave%closed .and. k == ns) cb = 1
+        sa = is_set(ca)
+        sb = is_set(cb)
+        ! Done from the start corner when it is set.
+        if (c /= ca .and. sa) cycle
+        pair%nset = pair%nset + 1
+        pair%set_node(pair%nset) = cm
+        pair%lam_n(cm) = 0.5_wp*(pair%lam_n(ca) + pair%lam_n(cb))
+        pair%lam_t(cm) = 0.5_wp*(pair%lam_t(ca) + pair%lam_t(cb))
+        pair%pressure(cm) = 0.5_wp*(pair%pressure(ca) + pair%pressure(cb))
+        pair%shear(cm) = 0.5_wp*(pair%shear(ca) + pair%shear(cb))
+        pair%slip(cm) = 0.5_wp*(pair%slip(ca) + pair%slip(cb))
+        if (sa .and. sb) then
+          pair%gap(cm) = 0.5_wp*(pair%gap(ca) + pair%gap(cb))
+          if (pair%status(ca) == ST_OPEN) then
+            pair%status(cm) = pair%status(cb)
+            pair%sigma(cm) = pair%sigma(cb)
+          else if (pair%status(cb) == ST_OPEN .or. pair%status(ca) == pair%status(cb)) then
+            pair%status(cm) = pair%status(ca)
+            pair%sigma(cm) = pair%sigma(ca)
+          else
+            pair%status(cm) = ST_SLIP
+            pair%sigma(cm) = merge(pair%sigma(ca), pair%sigma(cb), pair%status(ca) == ST_SLIP)
+          end if
+        else if (sa) then
+          pair%status(cm) = pair%status(ca)
+          pair%sigma(cm) = pair%sigma(ca)
+        else
+          pair%status(cm) = pair%status(cb)
+          pair%sigma(cm) = pair%sigma(cb)
+        end if
+      end do
+    end do
+  contains
+    !> Chain node cc carries a constraint this step: the nodes not set
+    !> this step keep the open gap huge(1) of the reset above.
+    logical function is_set(cc)
+      integer, intent(in) :: cc
+      is_set = pair%gap(cc) < huge(1.0_wp)
+    end function is_set
+  end subroutine mid_node_values
 
   !> Overlap of the surfaces at t = 0, before any contact force: the gap of
   !> each constraint on the positions at t(0), g_w(x) = g_w(xpred) - sum_p

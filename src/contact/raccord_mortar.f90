@@ -2,7 +2,9 @@
 !> (8)-(19); method brief section 5; doc/theory-contact-mortar.md).
 !>
 !> One constraint per slave chain node j whose multiplier psi_j meets the
-!> master: its row holds -G1(i, j) on slave nodes i and +G21(a, j) on master
+!> master (with mortar_work_t%corners the mid nodes of 3-node edges carry
+!> none; raccord_mortar_segments):
+!> its row holds -G1(i, j) on slave nodes i and +G21(a, j) on master
 !> nodes a, with (paper, after (15) and (16))
 !>   G1(i, j)  = integral of phi_i psi_j dGamma,   G21(a, j) = integral of phi_a psi_j dGamma,
 !> integrated over the part of the slave surface that faces the master
@@ -73,6 +75,10 @@ module raccord_mortar
     !> and each multiplier against its own weighted gap (cs%weighted);
     !> otherwise the paper's rows along the slave's nodal normal and (19)
     logical :: weighted = .false.
+    !> 3-node slave edges: multipliers on the corners only (raccord_mortar_segments;
+    !> no deck selects it yet, doc/theory-contact-mortar.md section 1);
+    !> otherwise one on every trace node
+    logical :: corners = .false.
     integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
     integer, allocatable :: nadj(:)           !< (nnode) segments a chain node belongs to (1 or 2)
     integer, allocatable :: adj_seg(:,:)      !< (2, nnode) those segments
@@ -401,10 +407,13 @@ contains
           ! (constraint numbering: g1(d, j) = G1(j + d, j)).
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
-            if (v == 0.0_wp) cycle
-            call put(slave%seg(ai, k), -v)
+            if (v /= 0.0_wp) call put(slave%seg(ai, k), -v)
             i = w%cidx(w%pos(ai, k))
-            if (i > 0) then
+            ! 3-node edges: the conditions' G1 is that of the corners' linear
+            ! hats N_corner + N_mid/2 (each mid node's share split between
+            ! its two corners; see below).
+            if (nen == 3 .and. w%corners .and. ai <= 2) v = v + 0.5_wp*w%g1loc(3, b, k)
+            if (i > 0 .and. v /= 0.0_wp) then
               d = i - j
               g1col(d) = g1col(d) + v
               band = max(band, abs(d))
@@ -426,6 +435,26 @@ contains
         do e = 1, nr
           w%slot(w%rnode(e)) = 0
         end do
+        if (nen == 3 .and. w%corners) then
+          ! 3-node edges: the multipliers live on the corners only, so G1
+          ! (slave nodes x multipliers) is not square. The conditions (19)
+          ! bear on the corners with G1~(i, j) = integral of phi~_i psi_j,
+          ! phi~ the corners' linear hats (N_corner + N_mid/2, exactly):
+          ! F~ = G1~ lambda is the nodal force with each mid node's force
+          ! split equally between its corners, and G1~^-T g_w the corner
+          ! values of the gap's linear interpolant that has the same
+          ! weighted gaps; on full overlaps G1~ = tridiag(H/6, 2H/3, H/6)
+          ! (P1), as for a 2-node edge. The rows keep the full G1 (forces
+          ! on every slave node, the gap of the quadratic trace).
+          ! (doc/theory-contact-mortar.md, section 1, "The Q8 choice")
+          v = 0.0_wp
+          do t = 1, w%nadj(c)
+            k = w%adj_seg(t, c)
+            b = w%adj_loc(t, c)
+            v = v + sum(w%g1loc(b, 1:2, k)) + 0.5_wp*sum(w%g1loc(3, 1:2, k))
+          end do
+          cs%length(j) = v
+        end if
       end if
       call corner_rows_after(c)
     end do
@@ -492,9 +521,10 @@ contains
     end function row_normal
 
     !> Integral of psi_c over the whole of its slave segments, the weight
-    !> its multiplier has where its support faces the master: 1/2 of a
-    !> 2-node edge, 1/4 (corner) or 1/2 (mid node) of a 3-node edge, for P1
-    !> and P0 alike; chord lengths of the predicted positions (a threshold
+    !> its multiplier has where its support faces the master: 1/2 of each
+    !> segment (2-node edges, and 3-node ones with corner multipliers; with
+    !> one on every trace node 1/4 (corner) or 1/2 (mid node) of a 3-node
+    !> edge), P1 and P0 alike; chord lengths of the predicted positions (a threshold
     !> only); axisymmetric: times 2 pi r at the segment's middle.
     real(wp) function full_weight(cc) result(wf)
       integer, intent(in) :: cc
@@ -506,7 +536,9 @@ contains
         xa = xpred(:, slave%seg(1, kk))
         xb = xpred(:, slave%seg(2, kk))
         frac = 0.5_wp
-        if (nen == 3 .and. w%adj_loc(tt, cc) /= 3) frac = 0.25_wp
+        ! A multiplier on every trace node of a 3-node edge (not
+        ! w%corners): a corner's weight is 1/4 of the edge.
+        if (nen == 3 .and. .not. w%corners .and. w%adj_loc(tt, cc) /= 3) frac = 0.25_wp
         if (slave%axisymmetric) frac = frac*pi*abs(xa(1) + xb(1))
         wf = wf + frac*norm2(xb - xa)
       end do
@@ -580,7 +612,7 @@ contains
 
     ! Split at the discontinuities of psi (P0: dual-cell bounds z_i; P1 on
     ! 3-node edges: the mid node) so that each piece is smooth.
-    call multiplier_breaks(nen, w%multiplier, nb, brk)
+    call multiplier_breaks(nen, w%multiplier, w%corners, nb, brk)
     bounds(1) = s0
     a = 1
     do ib = 1, nb
@@ -618,7 +650,7 @@ contains
         tm = xm(:, 1)*dnm(1) + xm(:, 2)*dnm(2)
         if (nenm == 3) tm = tm + xm(:, 3)*dnm(3)
         nu = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
-        call multiplier_basis(nen, w%multiplier, xi, psi)
+        call multiplier_basis(nen, w%multiplier, w%corners, xi, psi)
         do b = 1, nen
           if (psi(b) == 0.0_wp) cycle
           ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
@@ -787,7 +819,8 @@ contains
         ! Nearest node of this segment that faces the master.
         target = 0
         best = huge(1.0_wp)
-        do bb = 1, nen
+        ! With w%corners a mid node carries no multiplier.
+        do bb = 1, merge(2, nen, w%corners)
           if (bb == b .or. .not. w%covered(w%pos(bb, k))) cycle
           dist = abs(NODE_XI(bb) - NODE_XI(b))
           if (dist < best) then

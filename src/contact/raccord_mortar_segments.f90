@@ -6,13 +6,21 @@
 !> master segment), and the multiplier functions psi_j of M_h^1 and M_h^0
 !> (equations (8)-(11)) restricted to one slave segment.
 !>
-!> Multipliers live on the chain of ALL slave trace nodes (corners and, on
-!> 3-node edges, mid-side nodes). On a segment with parameter xi in [-1, 1]
-!> its chain nodes sit at xi = -1, +1 (and 0 for a 3-node edge):
-!>   P1: hats on the chain intervals ([-1, 1] for 2-node edges, [-1, 0] and
-!>       [0, 1] for 3-node edges);
-!>   P0: 1 on the dual cell of the node, bounded by the chain intervals'
-!>       midpoints z_i (xi = 0, or xi = -1/2 and +1/2).
+!> Multipliers live on the slave corner nodes (the segment ends) and, on
+!> 3-node (Q8) edges, on the mid-side nodes too, unless `corners` (issue
+!> #16: a multiplier on every trace node makes the Q8 stick traction zigzag
+!> from corner to mid node; the corner space removes it but gave energy on
+!> curved frictional cases, so no deck selects it yet). On a segment with
+!> parameter xi in [-1, 1], corners at xi = -1, +1, corner space:
+!>   P1: psi_start = (1 - xi)/2, psi_end = (1 + xi)/2, linear over the
+!>       whole segment (2- and 3-node edges alike);
+!>   P0: psi_start = 1 on [-1, 0), psi_end = 1 on [0, 1], the dual cells of
+!>       the corner chain (bound z at the segment's parameter midpoint).
+!> On 3-node edges these are the lower-order multiplier spaces of
+!> quadratic mortar (one degree below the trace, inf-sup stable). Without
+!> `corners` a 3-node edge has a multiplier on every trace node: hats on
+!> [-1, 0] and [0, 1], P0 cells bounded at xi = -1/2, +1/2 (the default;
+!> doc/theory-contact-mortar.md, section 1).
 module raccord_mortar_segments
   use raccord_kinds, only: wp
   use raccord_shape, only: shape_line
@@ -269,15 +277,18 @@ contains
     end subroutine eval
   end function bracketed_root
 
-  !> Interior discontinuities (P0) or kinks (P1 on 3-node edges) of the
-  !> multiplier functions on one segment, ascending: the mortar segments are
-  !> split there so that the Gauss rule sees polynomials.
-  pure subroutine multiplier_breaks(nen, multiplier, nb, brk)
+  !> Interior discontinuities (P0) or kinks (P1 on 3-node edges with a
+  !> multiplier on every trace node) of the multiplier functions on one
+  !> segment, ascending: the mortar segments are split there so that the
+  !> Gauss rule sees polynomials. `corners`: the corner space of the module
+  !> header on 3-node edges (P1 linear on the whole segment: no break).
+  pure subroutine multiplier_breaks(nen, multiplier, corners, nb, brk)
     integer, intent(in) :: nen, multiplier
+    logical, intent(in) :: corners
     integer, intent(out) :: nb
     real(wp), intent(out) :: brk(2)
     brk = 0.0_wp
-    if (nen == 2) then
+    if (nen == 2 .or. corners) then
       nb = merge(1, 0, multiplier == MULT_P0)
     else if (multiplier == MULT_P0) then
       nb = 2
@@ -289,15 +300,24 @@ contains
 
   !> psi(a) at xi of the multiplier of local node a (start, end, mid) on
   !> one segment. At a break the right-hand value is taken; Gauss points
-  !> never sit on a break.
-  pure subroutine multiplier_basis(nen, multiplier, xi, psi)
+  !> never sit on a break. On 3-node edges `corners` selects the corner
+  !> space (psi(3) = 0: the mid node has no multiplier; see the module
+  !> header), otherwise a multiplier on
+  !> every trace node (hats on [-1, 0] and [0, 1]; P0 cells bounded at
+  !> xi = -1/2, +1/2). For a 3-node edge of length
+  !> H (straight, centred mid node) the corner space's edge integrals of
+  !> N_i psi_j, local order (start, end, mid), are
+  !>   P1: psi_start: (1, 0, 2) H/6     P0: psi_start: (5, -1, 8) H/24
+  !> (psi_end mirrors psi_start): the P1 corner block is diagonal.
+  pure subroutine multiplier_basis(nen, multiplier, corners, xi, psi)
     integer, intent(in) :: nen, multiplier
+    logical, intent(in) :: corners
     real(wp), intent(in) :: xi
     real(wp), intent(out) :: psi(3)
     psi = 0.0_wp
     if (multiplier == MULT_P0) then
       ! Dual cells [z_i, z_i+1] around each chain node (paper, W_h^0).
-      if (nen == 2) then
+      if (nen == 2 .or. corners) then
         if (xi < 0.0_wp) then
           psi(1) = 1.0_wp
         else
@@ -314,7 +334,7 @@ contains
       end if
     else
       ! Hats on the chain intervals (paper, W_h^1).
-      if (nen == 2) then
+      if (nen == 2 .or. corners) then
         psi(1) = 0.5_wp*(1.0_wp - xi)
         psi(2) = 0.5_wp*(1.0_wp + xi)
       else if (xi < 0.0_wp) then

@@ -33,11 +33,15 @@ program test_contact_mortar
     new_test('G1 on a uniform slave mesh: tridiag(h/6, 2h/3, h/6) for P1 (Q4)', test_g1_p1), &
     new_test('G1 on a uniform slave mesh: tridiag(h/8, 3h/4, h/8) for P0 (Q4)', test_g1_p0), &
     new_test('G1 on a uniform Q8 slave mesh: hand-integrated edge matrices, P1 and P0', test_g1_q8), &
+    new_test('G1 on a uniform Q8 slave mesh, corner multipliers: edge matrices and G1~, P1 and P0', &
+      test_g1_q8_corners), &
     new_test('G21 reproduces 1 and x on non-matching meshes (Q4, Q8; P1, P0)', test_g21_reproduces), &
     new_test('G21 equals G1 on matching meshes (Q4, Q8; P1, P0)', test_g21_matching), &
     new_test('dual multipliers are refused with a message', test_refusals), &
     new_test('patch test, non-matching Q4 (slave 3 graded, master 11): P1 and P0 uniform', test_patch_q4), &
     new_test('patch test, non-matching Q8 (slave 2 graded, master 7): P1 and P0 uniform', test_patch_q8), &
+    new_test('patch test, non-matching Q8, corner multipliers: P1 and P0 uniform', &
+      test_patch_q8_corners), &
     new_test('patch test, fine side as slave (Q4 P1 and P0, slave 11, master 3 graded)', test_patch_fine_slave), &
     new_test('P0 against P1 under a load patch (smooth non-uniform pressure)', test_p0_vs_p1), &
     new_test('two bars impact, matching ends (P1): no penetration, momentum, 2L/c', test_impact_matching), &
@@ -50,13 +54,14 @@ contains
   !> Upper block 'b' (slave: its bottom) over lower block 'a' (master: its
   !> top), built in memory; G1 and G21 read back from the constraint rows in
   !> chain numbering of the slave and global numbering of the master.
-  subroutine coupling(etype, mult, ns, nm, xm0, lm, gap, mesh, slave, master, cs, failure)
+  subroutine coupling(etype, mult, ns, nm, xm0, lm, gap, mesh, slave, master, cs, failure, corners)
     integer, intent(in) :: etype, mult, ns, nm
     real(wp), intent(in) :: xm0, lm, gap
     type(mesh_t), intent(out) :: mesh
     type(contact_surface_t), intent(out) :: slave, master
     type(constraint_set_t), intent(out) :: cs
     type(failure_t), allocatable, intent(inout) :: failure
+    logical, intent(in), optional :: corners   !< Q8: multipliers on the corners only
     type(mesh_t) :: ma, mb
     type(mortar_work_t) :: w
     type(verlet_t) :: verlet
@@ -72,6 +77,7 @@ contains
       call check(failure, .false., 'setup failed: ' // err%message)
       return
     end if
+    if (present(corners)) w%corners = corners
     allocate(du(2, mesh%nnode), source=0.0_wp)
     call verlet_init(verlet, slave, master, .true., 0.25_wp)
     call build_mortar(slave, master, mesh%x, mesh%x, du, 0.25_wp, mult, verlet, cs, w)
@@ -203,6 +209,72 @@ contains
     end do
     write(*, '(a,es10.3)') '        max |G1 - edge matrices| / H = ', worst
   end subroutine test_g1_q8
+
+  !> Q8 slave edges of length H, multipliers on the corner nodes only
+  !> (mortar_work_t%corners, issue #16)
+  !> (linear over each edge for P1, constant on its halves for P0; the mid
+  !> nodes carry none). Edge matrices E(i, j) = integral of N_i psi_j over
+  !> one edge, by hand (local order start, end, mid; in units of H/48):
+  !>   P1: psi_start: ( 8,  0, 16)     P0: psi_start: (10, -2, 16)
+  !> (psi_end mirrors psi_start, psi_mid = 0): the P1 corner block is
+  !> diagonal. The conditions take G1~ of the corners' linear hats
+  !> N_corner + N_mid/2 (raccord_mortar, assemble_rows), which on a full
+  !> overlap is that of a 2-node chain of spacing H: tridiag(H/6, 2H/3,
+  !> H/6), ends H/3 (P1); tridiag(H/8, 3H/4, H/8), ends 3H/8 (P0).
+  subroutine test_g1_q8_corners(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp), parameter :: p1(3, 3) = reshape([8, 0, 16, 0, 8, 16, 0, 0, 0], [3, 3])/48.0_wp
+    real(wp), parameter :: p0(3, 3) = reshape([10, -2, 16, -2, 10, 16, 0, 0, 0], [3, 3])/48.0_wp
+    integer, parameter :: mults(2) = [MULT_P1, MULT_P0]
+    type(mesh_t) :: mesh
+    type(contact_surface_t) :: slave, master
+    type(constraint_set_t) :: cs
+    real(wp), allocatable :: g1(:,:), expect(:,:)
+    real(wp) :: h, worst, edge(3, 3), v
+    integer :: im, k, a, b, pos(3), j, d
+    worst = 0.0_wp
+    h = 0.2_wp
+    do im = 1, 2
+      call coupling(ELEM_Q8, mults(im), 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure, corners=.true.)
+      if (allocated(failure)) return
+      call check(failure, cs%m == 6 .and. all(mod(cs%snode(1:cs%m), 2) == 1), &
+        'every corner and no mid node should carry a multiplier')
+      if (allocated(failure)) return
+      edge = merge(p1, p0, mults(im) == MULT_P1)
+      allocate(expect(slave%nnode, slave%nnode), source=0.0_wp)
+      do k = 1, 5
+        pos = [2*k - 1, 2*k + 1, 2*k]
+        do b = 1, 3
+          do a = 1, 3
+            expect(pos(a), pos(b)) = expect(pos(a), pos(b)) + edge(a, b)*h
+          end do
+        end do
+      end do
+      call g1_matrix(slave, cs, g1)
+      worst = max(worst, maxval(abs(g1 - expect))/h)
+      call check(failure, maxval(abs(g1 - expect)) <= 1.0e-13_wp*h, 'Q8 G1 differs from the edge matrices')
+      ! The conditions' G1~ (band storage, half bandwidth 1 between corners).
+      do j = 1, cs%m
+        do d = -2, 2
+          if (j + d < 1 .or. j + d > cs%m) cycle
+          if (d == 0) then
+            v = merge(merge(1.0_wp/3.0_wp, 3.0_wp/8.0_wp, mults(im) == MULT_P1), &
+              merge(2.0_wp/3.0_wp, 3.0_wp/4.0_wp, mults(im) == MULT_P1), j == 1 .or. j == cs%m)
+          else if (abs(d) == 1) then
+            v = merge(1.0_wp/6.0_wp, 1.0_wp/8.0_wp, mults(im) == MULT_P1)
+          else
+            v = 0.0_wp
+          end if
+          worst = max(worst, abs(cs%g1(d, j) - v*h)/h)
+          call check_close(failure, cs%g1(d, j), v*h, 'G1~ of the corner hats, g1(d, j)', abs_tol=1.0e-15_wp)
+        end do
+      end do
+      call check(failure, cs%g1_band == 1, 'G1~ of 3-node edges has half bandwidth 1 (corner to corner)')
+      deallocate(expect)
+      if (allocated(failure)) return
+    end do
+    write(*, '(a,es10.3)') '        max |G1 - edge matrices| / H = ', worst
+  end subroutine test_g1_q8_corners
 
   !> sum_a G21(a, j) f(x_a) = sum_i G1(i, j) f(x_i) for f = 1 and f = x: the
   !> traces of both sides reproduce linear fields, and both sums are the
@@ -371,12 +443,14 @@ contains
   !> graded block is the upper one; `slave_upper` says which block is slave.
   !> Returns the largest |lambda - mean|/p (mortar) or |pressure - mean|/p
   !> (node-to-segment).
-  subroutine patch_case(failure, etype, na, nb, method, mult, slave_upper, err_rel, weighted)
+  subroutine patch_case(failure, etype, na, nb, method, mult, slave_upper, err_rel, weighted, corners)
     type(failure_t), allocatable, intent(inout) :: failure
     integer, intent(in) :: etype, na, nb, method, mult
     logical, intent(in) :: slave_upper
     !> mortar conditions = 'weighted' (default 'nodal')
     logical, intent(in), optional :: weighted
+    !> Q8: corner multipliers (mortar_work_t%corners) forced
+    logical, intent(in), optional :: corners
     real(wp), intent(out) :: err_rel
     real(wp), parameter :: e = 1000.0_wp, nu = 0.3_wp, rho = 1.0e-6_wp, p = 1.0_wp
     type(mesh_t) :: ma, mb, mesh
@@ -411,6 +485,7 @@ contains
     if (present(weighted)) scene%contacts(1)%weighted = weighted
     call prepare(scene, mesh, model, pairs, plan, state, failure)
     if (allocated(failure)) return
+    if (present(corners)) pairs(1)%mortar%corners = corners
     bal_max = 0.0_wp
     do
       call contact_step(model, pairs, state, err)
@@ -479,6 +554,22 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call patch_trio(failure, ELEM_Q8, 7, 2)
   end subroutine test_patch_q8
+
+  !> The Q8 patch test with corner multipliers (mortar_work_t%corners,
+  !> issue #16; set on the pair after prepare: no deck selects them): P1 and
+  !> P0 uniform, every node closed (mid nodes show the mean of their
+  !> corners).
+  subroutine test_patch_q8_corners(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp) :: e1, e0
+    call patch_case(failure, ELEM_Q8, 7, 2, METHOD_MORTAR, MULT_P1, .true., e1, corners=.true.)
+    if (allocated(failure)) return
+    call patch_case(failure, ELEM_Q8, 7, 2, METHOD_MORTAR, MULT_P0, .true., e0, corners=.true.)
+    if (allocated(failure)) return
+    write(*, '(a,es10.3,a,es10.3)') '        corner multipliers: max |lambda - mean|/p: mortar P1 ', e1, ', mortar P0 ', e0
+    call check(failure, e1 <= 1.0e-8_wp, 'corner multipliers: mortar P1 multipliers not uniform')
+    call check(failure, e0 <= 1.0e-8_wp, 'corner multipliers: mortar P0 multipliers not uniform')
+  end subroutine test_patch_q8_corners
 
   subroutine test_patch_fine_slave(failure)
     type(failure_t), allocatable, intent(out) :: failure
