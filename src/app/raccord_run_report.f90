@@ -195,6 +195,15 @@ contains
     case default
       s = 'mortar matching, multiplier space ' // str(pair%multiplier)
     end select
+    if (pair%mortar%corners .and. pair%slave%nen_seg == 3) then
+      ! edge_multipliers = 'corners' (doc/theory-contact-mortar.md, section 1)
+      select case (pair%multiplier)
+      case (MULT_P0)
+        s = 'mortar matching, P0 multipliers (constant on each half of a quadratic slave edge, at its corners)'
+      case (MULT_P1)
+        s = 'mortar matching, P1 multipliers (linear over each quadratic slave edge, at its corners)'
+      end select
+    end if
     if (pair%weighted) s = s // ', rows along the master''s normal, conditions on each weighted gap'
   end function matching_text
 

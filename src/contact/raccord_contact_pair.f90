@@ -138,10 +138,14 @@ contains
         pair%multiplier = spec%multiplier
         pair%weighted = spec%weighted
         pair%mortar%weighted = spec%weighted
-        ! Q8 corner multipliers (pair%mortar%corners) are not selected by
-        ! any deck: they remove the Fig. 4(b) stick zigzag but gave energy
-        ! on curved frictional and weighted cases (issue #16;
-        ! doc/theory-contact-mortar.md section 1). Default: every trace node.
+        ! Q8 corner multipliers (edge_multipliers = 'corners', opt-in): they
+        ! remove the Fig. 4(b) stick zigzag but gave energy on curved
+        ! frictional cases (issue #16; doc/theory-contact-mortar.md section 1).
+        ! Default: every trace node.
+        pair%mortar%corners = spec%corners
+        if (spec%corners .and. pair%slave%nen_seg /= 3) call log_warn('contact', where // &
+          ': edge_multipliers = ''corners'' has no effect on a slave of 2-node edges (Q4), whose multipliers ' // &
+          'sit at the corners already')
         pair%mu = spec%friction
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance

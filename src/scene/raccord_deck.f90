@@ -50,7 +50,8 @@ module raccord_deck
     'pressure', 'amplitude']
   character(len=*), parameter :: AMP_KEYS(*) = [character(len=16) :: 'name', 'time', 'value']
   character(len=*), parameter :: CONTACT_KEYS(*) = [character(len=16) :: 'slave', 'master', 'method', &
-    'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations', 'conditions']
+    'multiplier', 'friction', 'search_distance', 'tolerance', 'max_iterations', 'conditions', &
+    'edge_multipliers']
 
 
 contains
@@ -678,17 +679,17 @@ contains
 
 
   !> &contact_pair slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations,
-  !> conditions.
+  !> conditions, edge_multipliers.
   subroutine read_contact(deck, blk, spec, err)
     character(len=*), intent(in) :: deck
     type(deck_block_t), intent(in) :: blk
     type(contact_spec_t), intent(out) :: spec
     type(error_t), intent(inout) :: err
-    character(len=name_len) :: slave, master, method, multiplier, conditions
+    character(len=name_len) :: slave, master, method, multiplier, conditions, edge_multipliers
     real(wp) :: friction, search_distance, tolerance
     integer :: max_iterations
     namelist /contact_pair/ slave, master, method, multiplier, friction, search_distance, tolerance, max_iterations, &
-      conditions
+      conditions, edge_multipliers
     character(len=:), allocatable :: record, label
     character(len=256) :: msg
     integer :: k, ios
@@ -698,6 +699,7 @@ contains
     method = 'node_to_segment'
     multiplier = 'P1'
     conditions = 'nodal'
+    edge_multipliers = 'all_nodes'
     friction = spec%friction
     search_distance = spec%search_distance
     tolerance = spec%tolerance
@@ -795,6 +797,29 @@ contains
       call bad_value(deck, blk, label, 'conditions', 'conditions = ''weighted'' is a key of method = ''mortar''', &
         'node-to-segment already holds each multiplier against its own gap along the master''s normal; ' // &
         'remove the key or use method = ''mortar''', err)
+      return
+    end if
+    select case (lower(edge_multipliers))
+    case ('all_nodes')
+      spec%corners = .false.
+    case ('corners')
+      spec%corners = .true.
+    case default
+      call bad_value(deck, blk, label, 'edge_multipliers', 'unknown choice of multiplier nodes on quadratic edges', &
+        'use ''all_nodes'' (a multiplier at every node of a Q8 slave edge, the default) or ''corners'' ' // &
+        '(at its corner nodes only; doc/scene-reference.md)', err)
+      return
+    end select
+    if (spec%corners .and. spec%method == METHOD_NTS) then
+      call bad_value(deck, blk, label, 'edge_multipliers', 'edge_multipliers = ''corners'' is a key of ' // &
+        'method = ''mortar''', 'node-to-segment has a multiplier at every slave node; remove the key or use ' // &
+        'method = ''mortar''', err)
+      return
+    end if
+    if (spec%corners .and. spec%weighted) then
+      call bad_value(deck, blk, label, 'edge_multipliers', 'edge_multipliers = ''corners'' works with the ' // &
+        'paper''s conditions only', 'use conditions = ''nodal'' (the default) with it, or remove the key ' // &
+        '(with the weighted conditions the corner space let contact give energy on a Q8 ball)', err)
       return
     end if
     spec%slave = trim(slave)

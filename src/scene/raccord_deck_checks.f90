@@ -14,7 +14,7 @@ module raccord_deck_checks
   !> Keys whose value is text and so must be quoted in namelist input.
   character(len=*), parameter :: TEXT_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file', &
     'format', 'name', 'elset', 'hypothesis', 'set', 'type', 'components', 'amplitude', 'slave', 'master', &
-    'method', 'multiplier', 'kinematics', 'material', 'volumetric', 'conditions']
+    'method', 'multiplier', 'kinematics', 'material', 'volumetric', 'conditions', 'edge_multipliers']
 
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
 

@@ -170,6 +170,8 @@ contains
           end select
           call put_text(unit, 'multiplier', multiplier_name(p%multiplier), ios, msg)
           call put_text(unit, 'conditions', trim(merge('weighted', 'nodal   ', p%weighted)), ios, msg)
+          if (p%method == METHOD_MORTAR) &
+            call put_text(unit, 'edge_multipliers', trim(merge('corners  ', 'all_nodes', p%corners)), ios, msg)
           call put(unit, '  friction = ' // real_text(p%friction), ios, msg)
           call put(unit, '  search_distance = ' // real_text(p%search_distance), ios, msg)
           call put(unit, '  tolerance = ' // real_text(p%tolerance), ios, msg)

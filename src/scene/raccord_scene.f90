@@ -118,6 +118,10 @@ module raccord_scene
     !> gap (conditions = 'weighted') instead of the paper's (19) on G1 lambda
     !> and the nodal gap (conditions = 'nodal', the default)
     logical :: weighted = .false.
+    !> mortar on 3-node (Q8) slave edges: multipliers on the edges' corner
+    !> nodes only (edge_multipliers = 'corners') instead of on every trace
+    !> node ('all_nodes', the default); doc/theory-contact-mortar.md, section 1
+    logical :: corners = .false.
     real(wp) :: friction = 0.0_wp                   !< Coulomb coefficient mu; 0 = frictionless
     real(wp) :: search_distance = 0.0_wp            !< 0 = automatic (from the surface element sizes)
     real(wp) :: tolerance = 1.0e-10_wp              !< relative residual of the multiplier solve

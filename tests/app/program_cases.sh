@@ -385,6 +385,37 @@ check_contact)
   done
   ;;
 
+edge_multipliers)
+  # &contact_pair edge_multipliers (EXTRA: the Fig. 4(b) Q8 deck): 'corners'
+  # reaches the pair (the plan says so), and is refused with
+  # node-to-segment, with the weighted conditions and as an unknown value,
+  # naming the key; on a Q4 slave it is said to have no effect.
+  deck=$(basename "$extra")
+  cp "$(dirname "$extra")"/paper_q8.msh "$(dirname "$extra")"/paper_q4.msh "$work/"
+  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1', edge_multipliers = 'corners'/" "$extra" > "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  expect_text "$work/stdout.txt" "P1 multipliers (linear over each quadratic slave edge, at its corners)" "the plan names the corner multipliers"
+  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1'/" "$extra" > "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  if grep -q "at its corners" "$work/stdout.txt"; then fail "the default plan speaks of corner multipliers"
+  else pass "the default keeps a multiplier at every edge node"; fi
+  for bad in "method = 'node_to_segment', multiplier = 'P1', edge_multipliers = 'corners'" \
+             "method = 'mortar', multiplier = 'P1', conditions = 'weighted', edge_multipliers = 'corners'" \
+             "method = 'mortar', multiplier = 'P1', edge_multipliers = 'middle'"; do
+    sed -e "s/method = 'mortar', multiplier = 'P1'/$bad/" "$extra" > "$work/$deck"
+    run --check "$deck"
+    expect_code 2
+    expect_text "$work/stderr.txt" "edge_multipliers" "refused naming the key: $bad"
+  done
+  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1', edge_multipliers = 'corners'/" \
+    -e "s/paper_q8.msh/paper_q4.msh/" "$extra" > "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  expect_text "$work/stderr.txt" "edge_multipliers = 'corners' has no effect on a slave of 2-node edges" "the warning on a Q4 slave"
+  ;;
+
 progress_live)
   # Progress lines reach a redirected stdout while the run goes on (stdout
   # is flushed line by line), and the log lines carry a time stamp and the
