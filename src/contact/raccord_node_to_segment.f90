@@ -315,6 +315,26 @@ contains
     where (nodes == 0) nodes = master%seg(1, k)
   end subroutine smooth_foot
 
+  !> The four points P, A, B, N of the Hermite span of nodes nd (P or N 0
+  !> when missing: reflected about A or B, P = 2A - B, N = 2B - A).
+  pure subroutine span_points(x, nd, xq, xa, xb, xn)
+    real(wp), intent(in) :: x(:,:)
+    integer, intent(in) :: nd(4)
+    real(wp), intent(out) :: xq(2), xa(2), xb(2), xn(2)
+    xa = x(:, nd(2))
+    xb = x(:, nd(3))
+    if (nd(1) > 0) then
+      xq = x(:, nd(1))
+    else
+      xq = 2.0_wp*xa - xb
+    end if
+    if (nd(4) > 0) then
+      xn = x(:, nd(4))
+    else
+      xn = 2.0_wp*xb - xa
+    end if
+  end subroutine span_points
+
   !> Is every point of the Hermite span of nodes nd = (P, A, B, N), as
   !> span_closest reads it (P or N 0: reflected), farther from xp than
   !> dref? In Bezier form the span's control points are A, A + T_A/3,
@@ -333,18 +353,7 @@ contains
     real(wp), intent(in) :: xp(2), dref
     real(wp) :: xa(2), xb(2), xq(2), xn(2), b(2, 4), e(2), len2, s, r, smin, smax, rmin, rmax, ds, dr, tol
     integer :: i
-    xa = x(:, nd(2))
-    xb = x(:, nd(3))
-    if (nd(1) > 0) then
-      xq = x(:, nd(1))
-    else
-      xq = 2.0_wp*xa - xb
-    end if
-    if (nd(4) > 0) then
-      xn = x(:, nd(4))
-    else
-      xn = 2.0_wp*xb - xa
-    end if
+    call span_points(x, nd, xq, xa, xb, xn)
     b(:, 1) = xa - xp
     b(:, 2) = xa + (xb - xq)/6.0_wp - xp
     b(:, 3) = xb - (xn - xa)/6.0_wp - xp
@@ -397,18 +406,7 @@ contains
     real(wp) :: xa(2), xb(2), xq(2), xn(2), ba, bb, len, t, tn, f, fp, c(2), c2(2), dbest, tbest, dw(4), phi, turn
     real(wp) :: ta(2), tb(2), p1(2), p2(2), p3(2), q0(2)
     integer :: it
-    xa = x(:, nd(2))
-    xb = x(:, nd(3))
-    if (nd(1) > 0) then
-      xq = x(:, nd(1))
-    else
-      xq = 2.0_wp*xa - xb
-    end if
-    if (nd(4) > 0) then
-      xn = x(:, nd(4))
-    else
-      xn = 2.0_wp*xb - xa
-    end if
+    call span_points(x, nd, xq, xa, xb, xn)
     ba = 0.5_wp
     bb = 0.5_wp
     ! The end segment of an open chain: how much the piece turns (the sines
