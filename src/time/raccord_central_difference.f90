@@ -367,18 +367,20 @@ contains
       w = w + state%load_amp(l)*wl
     end do
     if (model%has_body_force) then
-      ! every node carries body force: by segments, as in predict_motion
-      !$omp parallel do if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) &
-    !$omp   num_threads(model%nthreads) schedule(static) default(none) &
-      !$omp   shared(model, state, wpart) private(s, n)
-      do s = 1, nseg
-        wpart(s) = 0.0_wp
-        do n = seg_first(s, model%nnode), seg_last(s, model%nnode)
-          wpart(s) = wpart(s) + model%f_body(1, n)*increment(state, model, 1, n) + &
-            model%f_body(2, n)*increment(state, model, 2, n)
+      ! every node carries body force: by segments, as in predict_motion; on
+      ! one thread no parallel region (a team of one still costs a futex call)
+      if (model%nthreads > 1 .and. model%nnode >= min_parallel_nodes) then
+        !$omp parallel do num_threads(model%nthreads) schedule(static) default(none) &
+        !$omp   shared(model, state, wpart) private(s)
+        do s = 1, nseg
+          wpart(s) = body_force_work(model, state, s)
         end do
-      end do
-      !$omp end parallel do
+        !$omp end parallel do
+      else
+        do s = 1, nseg
+          wpart(s) = body_force_work(model, state, s)
+        end do
+      end if
       w = w + sum_in_order(wpart)
     end if
     associate (e => state%energy)
@@ -391,6 +393,19 @@ contains
         abs(e%discrete), abs(e%contact), abs(e%damping), abs(e%plastic))
     end associate
   end subroutine update_energy
+
+  !> Work (E-2) of the body forces on the nodes of segment s.
+  pure real(wp) function body_force_work(model, state, s) result(w)
+    type(model_t), intent(in) :: model
+    type(state_t), intent(in) :: state
+    integer, intent(in) :: s
+    integer :: n
+    w = 0.0_wp
+    do n = seg_first(s, model%nnode), seg_last(s, model%nnode)
+      w = w + model%f_body(1, n)*increment(state, model, 1, n) + &
+        model%f_body(2, n)*increment(state, model, 2, n)
+    end do
+  end function body_force_work
 
   !> Displacement increment that multiplies a force at t(n) in (E-2):
   !> (u(n+1) - u(n-1))/2, or (dt/4)(v(0) + v(1/2)) on the first half step.
