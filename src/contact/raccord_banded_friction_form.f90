@@ -10,7 +10,7 @@ module raccord_banded_friction_form
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ST_STICK, ST_SLIP, ZMAX, &
     ensure1, ensure2, ensure_i, ensure_i2
   use raccord_solver_conditions, only: LEAST_INDEX_AFTER, least_index_change, update_sets, &
-    band_matvec
+    holds_to_roundoff, band_matvec
   use raccord_g1_runs, only: open_from_active, run_transposed
   implicit none
   private
@@ -175,6 +175,12 @@ contains
       if (info /= 0) return
       call band_matvec(cs, w%lam, w%fn)
       call band_matvec(cs, w%tau, w%ft)
+      ! an iterate that solves (19) to round-off ends a long iteration
+      ! (holds_to_roundoff: sets that alternate on round-off)
+      if (holds_to_roundoff(cs, mu, .true., it, w)) then
+        same = .true.
+        exit
+      end if
       call update_sets(cs, m, mu, .true., w)
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit

@@ -7,7 +7,7 @@ module raccord_frictionless_form
   use raccord_constraint_set, only: constraint_set_t
   use raccord_band_solver, only: band_cholesky_solve
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ZMAX, ensure1, ensure2, ensure_i, ensure_i2
-  use raccord_solver_conditions, only: update_sets, band_matvec
+  use raccord_solver_conditions, only: update_sets, holds_to_roundoff, band_matvec
   use raccord_g1_runs, only: open_from_active, run_solve
   implicit none
   private
@@ -96,6 +96,12 @@ contains
       call open_gaps(cs, dt*dt, no, w, info)
       if (info /= 0) return
       call band_matvec(cs, w%lam, w%fn)
+      ! an iterate that solves (19) to round-off ends a long iteration
+      ! (holds_to_roundoff: sets that alternate on round-off)
+      if (holds_to_roundoff(cs, 0.0_wp, .false., it, w)) then
+        same = .true.
+        exit
+      end if
       call update_sets(cs, m, 0.0_wp, .false., w)
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit

@@ -6,7 +6,7 @@ module raccord_nts_friction_form
   use raccord_constraint_set, only: constraint_set_t
   use raccord_band_solver, only: band_solve
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ST_STICK, ST_SLIP, ensure2
-  use raccord_solver_conditions, only: update_sets, band_matvec
+  use raccord_solver_conditions, only: update_sets, holds_to_roundoff, band_matvec
   use raccord_saddle_form, only: scale_rows
   implicit none
   private
@@ -125,6 +125,12 @@ contains
       end do
       call band_matvec(cs, w%lam, w%fn)
       call band_matvec(cs, w%tau, w%ft)
+      ! an iterate that solves (19) to round-off ends a long iteration
+      ! (holds_to_roundoff: sets that alternate on round-off)
+      if (holds_to_roundoff(cs, mu, .true., it, w)) then
+        same = .true.
+        exit
+      end if
       call update_sets(cs, m, mu, .true., w)
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit

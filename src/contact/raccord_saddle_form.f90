@@ -10,7 +10,7 @@ module raccord_saddle_form
   use raccord_band_solver, only: band_solve
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ST_STICK, ST_SLIP, ensure2
   use raccord_solver_conditions, only: LEAST_INDEX_AFTER, least_index_change, update_sets, &
-    band_matvec, g1c
+    holds_to_roundoff, band_matvec, g1c
   implicit none
   private
 
@@ -67,6 +67,12 @@ contains
       end do
       call band_matvec(cs, w%lam, w%fn)
       call band_matvec(cs, w%tau, w%ft)
+      ! an iterate that solves (19) to round-off ends a long iteration
+      ! (holds_to_roundoff: sets that alternate on round-off)
+      if (holds_to_roundoff(cs, mu, friction, it, w)) then
+        same = .true.
+        exit
+      end if
       call update_sets(cs, m, mu, friction, w)
       same = all(w%status(1:m) == w%status_old(1:m))
       if (same) exit
