@@ -287,7 +287,11 @@ contains
         if (w%ulist(p2 + 1) - w%ulist(p2) > g1b) exit
         p2 = p2 + 1
       end do
-      ns = count(w%status(w%ulist(p1:p2)) == ST_SLIP)
+      ! (a loop: count over a vector subscript allocated a temporary per run)
+      ns = 0
+      do p = p1, p2
+        if (w%status(w%ulist(p)) == ST_SLIP) ns = ns + 1
+      end do
       if (ns >= BORDER_SLIP) then
         do p = p1, p2
           do e = 1, w%ztcnt(p)

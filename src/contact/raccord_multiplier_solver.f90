@@ -121,18 +121,12 @@ contains
         call finish_solve(cs, mu, friction, same, w, status, sigma)
         return
       end if
-      w%status(1:m) = status(1:m)
-      where (w%status(1:m) == ST_SLIP) w%status(1:m) = ST_STICK
-      w%iterations = 0
     else if (friction .and. cs%g1_band == 0 .and. .not. cs%weighted) then
       call solve_diagonal_friction(cs, dt, mu, max_iter, w, same, info)
       if (info == 0) then
         call finish_solve(cs, mu, friction, same, w, status, sigma)
         return
       end if
-      w%status(1:m) = status(1:m)
-      w%sigma(1:m) = sigma(1:m)
-      w%iterations = 0
     else if (friction .and. .not. cs%weighted .and. any(w%status(1:m) /= ST_STICK)) then
       ! (A guess of all in stick leaves the saddle form nothing to
       ! eliminate: it is then the same system, with less bookkeeping.)
@@ -141,11 +135,12 @@ contains
         call finish_solve(cs, mu, friction, same, w, status, sigma)
         return
       end if
-      w%status(1:m) = status(1:m)
-      w%sigma(1:m) = sigma(1:m)
-      w%iterations = 0
     end if
 
+    ! A reduced form that declined leaves in w%status the sets of its
+    ! iteration w%iterations, not yet solved: the saddle form continues
+    ! from there (the same update rule, so the same iterations to round-off)
+    ! instead of starting again from the guess.
     call solve_saddle(cs, dt, mu, friction, bw, max_iter, w, same)
     call finish_solve(cs, mu, friction, same, w, status, sigma)
   end subroutine solve_multipliers

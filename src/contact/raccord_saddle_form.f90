@@ -25,6 +25,9 @@ contains
   !> Active-set iteration on the saddle form: for the sets in w%status,
   !> assemble and solve, update the sets (update_sets), until they no longer
   !> change or max_iter; one change per iteration after LEAST_INDEX_AFTER.
+  !> It starts at iteration max(1, w%iterations): a reduced form that
+  !> declined at its iteration k leaves the sets of that iteration, which
+  !> the saddle form solves as its iteration k.
   !> same: the sets settled. A singular system stops the iteration with
   !> w%converged = .false. and w%singular = .true.
   subroutine solve_saddle(cs, dt, mu, friction, bw, max_iter, w, same)
@@ -39,7 +42,7 @@ contains
 
     m = cs%m
     same = .false.
-    do it = 1, max_iter
+    do it = max(1, w%iterations), max_iter
       w%iterations = it
       w%status_old(1:m) = w%status(1:m)
       call layout(m, friction, bw, w, n, kl, ku)
