@@ -139,9 +139,11 @@ contains
         pair%weighted = spec%weighted
         pair%mortar%weighted = spec%weighted
         ! Q8 corner multipliers (edge_multipliers = 'corners', opt-in): they
-        ! remove the Fig. 4(b) stick zigzag but gave energy on curved
-        ! frictional cases (issue #16; doc/theory-contact-mortar.md section 1).
-        ! Default: every trace node.
+        ! remove the Fig. 4(b) stick zigzag but give energy where the contact
+        ! edge moves over a curved master (a row drives the mid nodes of two
+        ! edges along one direction; doc/reproduction.md, "The Q8 stick
+        ! zigzag: corner multipliers on curved surfaces"). Default: every
+        ! trace node.
         pair%mortar%corners = spec%corners
         if (spec%corners .and. pair%slave%nen_seg /= 3) call log_warn('contact', where // &
           ': edge_multipliers = ''corners'' has no effect on a slave of 2-node edges (Q4), whose multipliers ' // &

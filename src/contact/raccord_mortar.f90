@@ -76,8 +76,8 @@ module raccord_mortar
     !> otherwise the paper's rows along the slave's nodal normal and (19)
     logical :: weighted = .false.
     !> 3-node slave edges: multipliers on the corners only (raccord_mortar_segments;
-    !> no deck selects it yet, doc/theory-contact-mortar.md section 1);
-    !> otherwise one on every trace node
+    !> &contact_pair edge_multipliers = 'corners', opt-in: doc/theory-contact-mortar.md
+    !> section 1); otherwise one on every trace node
     logical :: corners = .false.
     integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
     integer, allocatable :: nadj(:)           !< (nnode) segments a chain node belongs to (1 or 2)
