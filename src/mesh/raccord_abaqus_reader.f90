@@ -426,7 +426,8 @@ contains
       k = find_group(d%nsets, d%nnset, entry, .true.)
       if (k == 0) then
         call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
-          ' is neither a node id nor a node set defined above: define the set with *NSET before this line')
+          ' is neither a node id nor a node set defined above' // kind_note(d, entry, 'node') // &
+          ': define the set with *NSET before this line')
         return
       end if
       ids = d%nsets(k)%id(1:d%nsets(k)%n)      ! copy: the target may be this very set
@@ -441,8 +442,8 @@ contains
       k = find_group(d%esets, d%neset, entry, .true.)
       if (k == 0) then
         call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
-          ' is neither an element id nor an element set defined above: define the set with *ELSET ' // &
-          '(or ELSET= on *ELEMENT) before this line')
+          ' is neither an element id nor an element set defined above' // kind_note(d, entry, 'elem') // &
+          ': define the set with *ELSET (or ELSET= on *ELEMENT) before this line')
         return
       end if
       ids = d%esets(k)%id(1:d%esets(k)%n)
@@ -490,8 +491,8 @@ contains
     k = find_group(d%esets, d%neset, target, .true.)
     if (k == 0) then
       call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // d%surfaces(st%surf)%name // &
-        '" uses element set "' // target // '", which is undefined: define it with *ELSET (or ELSET= on ' // &
-        '*ELEMENT) before the surface, or correct the name')
+        '" uses element set "' // target // '", which is undefined' // kind_note(d, target, 'elem') // &
+        ': define it with *ELSET (or ELSET= on *ELEMENT) before the surface, or correct the name')
       return
     end if
     ids = d%esets(k)%id(1:d%esets(k)%n)
@@ -532,6 +533,26 @@ contains
       s = 'remesh with 4- or 8-node plane quadrilaterals'
     end if
   end function type_hint
+
+  !> What else `name` is, when it is not a set of the kind wanted ('node' or
+  !> 'elem'): ' ("x" is an element set here)' or '' (raccord_mesh_names
+  !> does the same for the deck's names).
+  function kind_note(d, name, want) result(s)
+    type(mesh_draft_t), intent(in) :: d
+    character(len=*), intent(in) :: name, want
+    character(len=:), allocatable :: s
+    s = ''
+    if (want == 'node') then
+      if (d%neset > 0) then
+        if (find_group(d%esets, d%neset, name, .true.) > 0) s = ' ("' // name // '" is an element set here)'
+      end if
+    else
+      if (d%nnset > 0) then
+        if (find_group(d%nsets, d%nnset, name, .true.) > 0) s = ' ("' // name // '" is a node set here)'
+      end if
+    end if
+    if (len(s) == 0 .and. find_draft_surface(d, name, .true.) > 0) s = ' ("' // name // '" is a surface here)'
+  end function kind_note
 
   !> Index of the set `name` (created empty when absent), names compared
   !> without regard to case as Abaqus does for unquoted labels. Abaqus
