@@ -760,8 +760,8 @@ contains
       call bad_value(deck, blk, label, 'search_distance', 'the search distance must be >= 0', &
         'give a length, or search_distance = 0 for automatic', err)
     else if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
-      call bad_value(deck, blk, label, 'tolerance', 'the solver tolerance is a relative residual and must ' // &
-        'lie in (0, 1)', 'use e.g. tolerance = 1e-10', err)
+      call bad_value(deck, blk, label, 'tolerance', 'the solver tolerance is a relative residual: it must be ' // &
+        '> 0 and < 1', 'use e.g. tolerance = 1e-10', err)
     else if (max_iterations < 1) then
       call bad_value(deck, blk, label, 'max_iterations', 'the iteration cap must be >= 1', &
         'use e.g. max_iterations = 200', err)
