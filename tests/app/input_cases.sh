@@ -147,7 +147,7 @@ friction_bound)
   seed tol axi.nml axi.inp
   sed -i "s/friction = 0.2/friction = 0.2, tolerance = 1.0/" "$d"
   try tol axi.nml 2 --check
-  says tol "axi.nml:39" "key 'tolerance' = 1.0" "(0, 1)"
+  says tol "axi.nml:39" "key 'tolerance' = 1.0" "> 0 and < 1"
   # A tolerance in range is taken, with a warning that it has no effect.
   seed tol_ok axi.nml axi.inp
   sed -i "s/friction = 0.2/friction = 0.2, tolerance = 1e-8/" "$d"
