@@ -594,7 +594,6 @@ contains
       ' than "' // old // '" there, but raccord compares set and surface names without regard to case ' // &
       '(doc/mesh-formats.md) and could not tell them apart; give the two ' // what // 's names that differ ' // &
       'by more than case, or the same spelling if they are one ' // what
-
   end function clash_text
 
   !> Value of parameter key (lower case) on a keyword line; quotes removed.

@@ -73,8 +73,10 @@ contains
     type(error_t), intent(inout) :: err
     integer, allocatable :: ks(:), km(:)
     integer :: i, j, np
-    character(len=:), allocatable :: where
+    character(len=:), allocatable :: where, source
     if (.not. allocated(scene%contacts)) return
+    source = '(built in memory)'
+    if (allocated(mesh%source)) source = mesh%source
     np = size(scene%contacts)
     allocate(ks(np), km(np))
     do i = 1, np
@@ -85,7 +87,7 @@ contains
         trim(scene%contacts(i)%slave) // ''', master ''' // trim(scene%contacts(i)%master) // ''')'
       if (ks(i) == km(i)) then
         call raise_error(err, EXIT_INPUT, where // ': slave and master are the same surface ''' // &
-          mesh%surfaces(ks(i))%name // ''' of mesh ' // mesh%source // name_rule(mesh) // &
+          mesh%surfaces(ks(i))%name // ''' of mesh ' // source // name_rule(mesh) // &
           '; give the pair two surfaces, one on each body')
         return
       end if
