@@ -6,6 +6,7 @@ module raccord_contact_surface
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
   use raccord_mesh, only: mesh_t, find_surface
+  use raccord_mesh_names, only: not_found_text
   implicit none
   private
 
@@ -43,9 +44,8 @@ contains
 
     is = find_surface(mesh, name)
     if (is == 0) then
-      call raise_error(err, EXIT_INPUT, where // ': surface ''' // trim(name) // ''' not found in mesh ' // &
-        mesh%source // '; surfaces there: ' // surface_list(mesh) // &
-        '. A contact surface is a Gmsh physical curve or an Abaqus *SURFACE.')
+      call raise_error(err, EXIT_INPUT, where // ': ''' // trim(name) // ''' ' // not_found_text(mesh, name, &
+        'surface') // '. A contact surface is a Gmsh physical curve or an Abaqus *SURFACE, TYPE=ELEMENT.')
       return
     end if
     associate (ms => mesh%surfaces(is))
@@ -170,19 +170,4 @@ contains
     surf%node = surf%node(1:cnt)
     surf%s0 = surf%s0(1:cnt)
   end subroutine build_contact_surface
-
-  !> Names of the mesh's surfaces, comma-separated.
-  function surface_list(mesh) result(names)
-    type(mesh_t), intent(in) :: mesh
-    character(len=:), allocatable :: names
-    integer :: k
-    names = ''
-    if (allocated(mesh%surfaces)) then
-      do k = 1, size(mesh%surfaces)
-        if (k > 1) names = names // ', '
-        names = names // mesh%surfaces(k)%name
-      end do
-    end if
-    if (len(names) == 0) names = '(none)'
-  end function surface_list
 end module raccord_contact_surface

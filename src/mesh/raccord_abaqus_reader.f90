@@ -19,8 +19,8 @@ module raccord_abaqus_reader
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
     split_fields, parse_int, parse_real
-  use raccord_mesh_draft, only: mesh_draft_t, add_file, add_node, add_element, find_group, add_group, &
-    add_member, add_draft_surface, add_edge_by_side
+  use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
+    add_group, add_member, add_draft_surface, find_draft_surface, add_edge_by_side
   implicit none
   private
 
@@ -164,7 +164,7 @@ contains
     integer, allocatable :: f(:), l(:)
     integer :: nf, k
     character(len=:), allocatable :: kw, at, name, typ, inc
-    logical :: found
+    logical :: found, quoted
 
     call split_fields(sl%text, ',', f, l, nf)
     kw = lower(trim(adjustl(sl%text(2:l(1)))))
@@ -220,8 +220,9 @@ contains
     select case (kw)
     case ('node')
       st%block = BLK_NODE
-      call get_param(sl%text, f, l, nf, 'nset', name, found)
-      if (found) call add_group(d%nsets, d%nnset, name, .true., st%set)
+      call get_param(sl%text, f, l, nf, 'nset', name, found, quoted)
+      if (found) call add_named_group(d%nsets, d%nnset, name, quoted, at // ': NSET=', st%set, err)
+      if (err%failed()) return
     case ('element')
       st%block = BLK_ELEMENT
       call get_param(sl%text, f, l, nf, 'type', typ, found)
@@ -244,10 +245,11 @@ contains
         if (len(st%reduced) > 0) st%reduced = st%reduced // ', '
         st%reduced = st%reduced // typ
       end if
-      call get_param(sl%text, f, l, nf, 'elset', name, found)
-      if (found) call add_group(d%esets, d%neset, name, .true., st%set)
+      call get_param(sl%text, f, l, nf, 'elset', name, found, quoted)
+      if (found) call add_named_group(d%esets, d%neset, name, quoted, at // ': ELSET=', st%set, err)
+      if (err%failed()) return
     case ('nset', 'elset')
-      call get_param(sl%text, f, l, nf, kw, name, found)
+      call get_param(sl%text, f, l, nf, kw, name, found, quoted)
       if (.not. found .or. len(name) == 0) then
         call raise_error(err, EXIT_INPUT, at // ': ' // st%keyword // ' needs its name: ' // &
           st%keyword // ', ' // kw // '=name')
@@ -255,14 +257,15 @@ contains
       end if
       if (kw == 'nset') then
         st%block = BLK_NSET
-        call add_group(d%nsets, d%nnset, name, .true., st%set)
+        call add_named_group(d%nsets, d%nnset, name, quoted, at // ': ' // st%keyword // ', NSET=', st%set, err)
       else
         st%block = BLK_ELSET
-        call add_group(d%esets, d%neset, name, .true., st%set)
+        call add_named_group(d%esets, d%neset, name, quoted, at // ': ' // st%keyword // ', ELSET=', st%set, err)
       end if
+      if (err%failed()) return
     case ('surface')
       st%block = BLK_SURFACE
-      call get_param(sl%text, f, l, nf, 'name', name, found)
+      call get_param(sl%text, f, l, nf, 'name', name, found, quoted)
       if (.not. found .or. len(name) == 0) then
         call raise_error(err, EXIT_INPUT, at // ': *SURFACE needs its name: *SURFACE, NAME=name, TYPE=ELEMENT')
         return
@@ -273,7 +276,16 @@ contains
           'use TYPE=ELEMENT with "element-or-elset, S1..S4" lines (or a *NSET for a node set)')
         return
       end if
+      k = find_draft_surface(d, name, .true.)
+      if (k > 0) then
+        if (case_clash(d%surfaces(k)%name, d%surfaces(k)%quoted, name, quoted)) then
+          call raise_error(err, EXIT_INPUT, clash_text(at // ': *SURFACE, NAME=', name, &
+            d%surfaces(k)%name, 'surface'))
+          return
+        end if
+      end if
       call add_draft_surface(d, name, .true., st%surf)
+      d%surfaces(st%surf)%quoted = d%surfaces(st%surf)%quoted .or. quoted
     case default
       st%block = BLK_SKIP
       if (index(', ' // lower(st%ignored) // ', ', ', ' // lower(st%keyword) // ', ') == 0) then
@@ -414,7 +426,8 @@ contains
       k = find_group(d%nsets, d%nnset, entry, .true.)
       if (k == 0) then
         call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
-          ' is neither a node id nor a node set defined above: define the set with *NSET before this line')
+          ' is neither a node id nor a node set defined above' // kind_note(d, entry, 'node') // &
+          ': define the set with *NSET before this line')
         return
       end if
       ids = d%nsets(k)%id(1:d%nsets(k)%n)      ! copy: the target may be this very set
@@ -429,8 +442,8 @@ contains
       k = find_group(d%esets, d%neset, entry, .true.)
       if (k == 0) then
         call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
-          ' is neither an element id nor an element set defined above: define the set with *ELSET ' // &
-          '(or ELSET= on *ELEMENT) before this line')
+          ' is neither an element id nor an element set defined above' // kind_note(d, entry, 'elem') // &
+          ': define the set with *ELSET (or ELSET= on *ELEMENT) before this line')
         return
       end if
       ids = d%esets(k)%id(1:d%esets(k)%n)
@@ -478,8 +491,8 @@ contains
     k = find_group(d%esets, d%neset, target, .true.)
     if (k == 0) then
       call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // d%surfaces(st%surf)%name // &
-        '" uses element set "' // target // '", which is undefined: define it with *ELSET (or ELSET= on ' // &
-        '*ELEMENT) before the surface, or correct the name')
+        '" uses element set "' // target // '", which is undefined' // kind_note(d, target, 'elem') // &
+        ': define it with *ELSET (or ELSET= on *ELEMENT) before the surface, or correct the name')
       return
     end if
     ids = d%esets(k)%id(1:d%esets(k)%n)
@@ -521,15 +534,79 @@ contains
     end if
   end function type_hint
 
+  !> What else `name` is, when it is not a set of the kind wanted ('node' or
+  !> 'elem'): ' ("x" is an element set here)' or '' (raccord_mesh_names
+  !> does the same for the deck's names).
+  function kind_note(d, name, want) result(s)
+    type(mesh_draft_t), intent(in) :: d
+    character(len=*), intent(in) :: name, want
+    character(len=:), allocatable :: s
+    s = ''
+    if (want == 'node') then
+      if (d%neset > 0) then
+        if (find_group(d%esets, d%neset, name, .true.) > 0) s = ' ("' // name // '" is an element set here)'
+      end if
+    else
+      if (d%nnset > 0) then
+        if (find_group(d%nsets, d%nnset, name, .true.) > 0) s = ' ("' // name // '" is a node set here)'
+      end if
+    end if
+    if (len(s) == 0 .and. find_draft_surface(d, name, .true.) > 0) s = ' ("' // name // '" is a surface here)'
+  end function kind_note
+
+  !> Index of the set `name` (created empty when absent), names compared
+  !> without regard to case as Abaqus does for unquoted labels. Abaqus
+  !> keeps the case of a label in double quotes, so "Top" and TOP are two
+  !> sets there; raccord compares every name without regard to case
+  !> (doc/mesh-formats.md), so such a pair is refused rather than merged.
+  subroutine add_named_group(groups, n, name, quoted, at, k, err)
+    type(draft_group_t), allocatable, intent(inout) :: groups(:)
+    integer, intent(inout) :: n
+    character(len=*), intent(in) :: name, at
+    logical, intent(in) :: quoted
+    integer, intent(out) :: k
+    type(error_t), intent(inout) :: err
+    k = 0
+    if (allocated(groups)) k = find_group(groups, n, name, .true.)
+    if (k > 0) then
+      if (case_clash(groups(k)%name, groups(k)%quoted, name, quoted)) then
+        call raise_error(err, EXIT_INPUT, clash_text(at, name, groups(k)%name, 'set'))
+        k = 0
+        return
+      end if
+    end if
+    call add_group(groups, n, name, .true., k)
+    groups(k)%quoted = groups(k)%quoted .or. quoted
+  end subroutine add_named_group
+
+  !> Two spellings of one name that Abaqus would read as two labels: they
+  !> differ in case and one of them was quoted.
+  pure logical function case_clash(old, old_quoted, new, new_quoted)
+    character(len=*), intent(in) :: old, new
+    logical, intent(in) :: old_quoted, new_quoted
+    case_clash = (old_quoted .or. new_quoted) .and. old /= new
+  end function case_clash
+
+  function clash_text(at, name, old, what) result(s)
+    character(len=*), intent(in) :: at, name, old, what
+    character(len=:), allocatable :: s
+    s = at // '"' // name // '": Abaqus keeps the case of a quoted label, so this is another ' // what // &
+      ' than "' // old // '" there, but raccord compares set and surface names without regard to case ' // &
+      '(doc/mesh-formats.md) and could not tell them apart; give the two ' // what // 's names that differ ' // &
+      'by more than case, or the same spelling if they are one ' // what
+  end function clash_text
+
   !> Value of parameter key (lower case) on a keyword line; quotes removed.
-  subroutine get_param(text, f, l, nf, key, value, found)
+  subroutine get_param(text, f, l, nf, key, value, found, quoted)
     character(len=*), intent(in) :: text, key
     integer, intent(in) :: f(:), l(:), nf
     character(len=:), allocatable, intent(out) :: value
     logical, intent(out) :: found
+    logical, intent(out), optional :: quoted   !< the value was in double quotes
     integer :: k, eq
     found = .false.
     value = ''
+    if (present(quoted)) quoted = .false.
     do k = 2, nf
       if (f(k) > l(k)) cycle
       eq = index(text(f(k):l(k)), '=')
@@ -537,7 +614,10 @@ contains
       if (lower(trim(text(f(k):f(k) + eq - 2))) /= key) cycle
       value = trim(adjustl(text(f(k) + eq:l(k))))
       if (len(value) >= 2) then
-        if (value(1:1) == '"' .and. value(len(value):len(value)) == '"') value = value(2:len(value) - 1)
+        if (value(1:1) == '"' .and. value(len(value):len(value)) == '"') then
+          value = value(2:len(value) - 1)
+          if (present(quoted)) quoted = .true.
+        end if
       end if
       found = .true.
       return

@@ -15,6 +15,7 @@
 !>   tangent (end - start) turned clockwise.
 module raccord_mesh
   use raccord_kinds, only: wp
+  use raccord_strings, only: lower
   implicit none
   private
 
@@ -61,10 +62,14 @@ module raccord_mesh
     !> as Q4/Q8; the deck's hypothesis decides (raccord_model_build warns on
     !> a mismatch). '' when none.
     character(len=:), allocatable :: axi_types
+    !> set and surface names compare without regard to case (Abaqus, whose
+    !> labels are case-insensitive); Gmsh names compare exactly
+    !> (doc/mesh-formats.md, "Set and surface names")
+    logical :: ignore_case = .false.
   end type mesh_t
 
   public :: nodes_per_element, element_name
-  public :: find_node_set, find_elem_set, find_surface, side_nodes
+  public :: find_node_set, find_elem_set, find_surface, side_nodes, same_name
 
 contains
 
@@ -101,7 +106,20 @@ contains
     if (etype == ELEM_Q8) loc(3) = 4 + side
   end function side_nodes
 
-  !> Index of the node set with that name (case-sensitive), or 0.
+  !> A name of the deck (trailing blanks ignored) names the mesh's set
+  !> `set_name` under the mesh format's rule: exactly (Gmsh), or without
+  !> regard to case (Abaqus, mesh%ignore_case).
+  pure logical function same_name(mesh, set_name, name)
+    type(mesh_t), intent(in) :: mesh
+    character(len=*), intent(in) :: set_name, name
+    if (mesh%ignore_case) then
+      same_name = lower(set_name) == lower(trim(name))
+    else
+      same_name = set_name == trim(name)
+    end if
+  end function same_name
+
+  !> Index of the node set with that name (same_name), or 0.
   pure integer function find_node_set(mesh, name)
     type(mesh_t), intent(in) :: mesh
     character(len=*), intent(in) :: name
@@ -109,14 +127,14 @@ contains
     find_node_set = 0
     if (.not. allocated(mesh%nsets)) return
     do k = 1, size(mesh%nsets)
-      if (mesh%nsets(k)%name == trim(name)) then
+      if (same_name(mesh, mesh%nsets(k)%name, name)) then
         find_node_set = k
         return
       end if
     end do
   end function find_node_set
 
-  !> Index of the element set with that name, or 0.
+  !> Index of the element set with that name (same_name), or 0.
   pure integer function find_elem_set(mesh, name)
     type(mesh_t), intent(in) :: mesh
     character(len=*), intent(in) :: name
@@ -124,14 +142,14 @@ contains
     find_elem_set = 0
     if (.not. allocated(mesh%esets)) return
     do k = 1, size(mesh%esets)
-      if (mesh%esets(k)%name == trim(name)) then
+      if (same_name(mesh, mesh%esets(k)%name, name)) then
         find_elem_set = k
         return
       end if
     end do
   end function find_elem_set
 
-  !> Index of the surface with that name, or 0.
+  !> Index of the surface with that name (same_name), or 0.
   pure integer function find_surface(mesh, name)
     type(mesh_t), intent(in) :: mesh
     character(len=*), intent(in) :: name
@@ -139,7 +157,7 @@ contains
     find_surface = 0
     if (.not. allocated(mesh%surfaces)) return
     do k = 1, size(mesh%surfaces)
-      if (mesh%surfaces(k)%name == trim(name)) then
+      if (same_name(mesh, mesh%surfaces(k)%name, name)) then
         find_surface = k
         return
       end if

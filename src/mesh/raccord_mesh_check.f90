@@ -55,6 +55,7 @@ contains
     call build_surfaces(d, node_map, elem_map, new_node, mesh, err)
     mesh%axi_types = ''
     if (allocated(d%axi_types)) mesh%axi_types = d%axi_types
+    mesh%ignore_case = d%format_name == 'abaqus'
   end subroutine finalize_mesh
 
   !> File id -> draft index maps; a repeated id is an error at its second use.

@@ -26,6 +26,7 @@ module raccord_mesh_draft
     integer, allocatable :: id(:)
     integer, allocatable :: file(:)        !< index in mesh_draft_t%files
     integer, allocatable :: line(:)
+    logical :: quoted = .false.            !< Abaqus: a spelling was given in double quotes (case kept)
   end type draft_group_t
 
   !> Named surface: edges given either by their nodes (Gmsh line elements)
@@ -38,6 +39,7 @@ module raccord_mesh_draft
     integer, allocatable :: side(:)        !< side 1..4 when given by side, else 0
     integer, allocatable :: file(:)
     integer, allocatable :: line(:)
+    logical :: quoted = .false.            !< Abaqus: a spelling was given in double quotes (case kept)
   end type draft_surface_t
 
   type, public :: mesh_draft_t

@@ -7,6 +7,7 @@ module raccord_model_build
   use raccord_strings, only: str
   use raccord_mesh, only: mesh_t, nodes_per_element, element_name, find_node_set, find_elem_set, &
     find_surface, ELEM_Q4, ELEM_Q8
+  use raccord_mesh_names, only: not_found_text
   use raccord_scene, only: scene_t, bc_spec_t, BC_FIXED, BC_DISPLACEMENT, BC_TRACTION, BC_PRESSURE
   use raccord_elastic_block, only: init_elastic_block, claim_first_touch, add_lumped_mass, add_body_force, max_eigenvalue_bound, &
     make_finite, finite_w2_at_rest, make_plastic, make_axisymmetric
@@ -18,7 +19,7 @@ module raccord_model_build
   implicit none
   private
 
-  public :: build_model, set_names, surface_nodes
+  public :: build_model, surface_nodes
 
 contains
 
@@ -48,6 +49,8 @@ contains
     call claim_nodes(model)
     call build_boundaries(scene, mesh, model, elem_body, err)
     if (err%failed()) return
+    call check_pair_surfaces(scene, mesh, err)
+    if (err%failed()) return
     if (model%axisymmetric) then
       call hold_axis_nodes(scene, mesh, model, err)
       if (err%failed()) return
@@ -57,6 +60,55 @@ contains
     if (model%nthreads > 1) call log_info('build_model', 'threads: ' // str(model%nthreads) // &
       ' (OMP_NUM_THREADS)')
   end subroutine build_model
+
+  !> The deck's check of its pairs compares the names as written; an
+  !> Abaqus mesh compares them without regard to case, so 'Top' and 'TOP'
+  !> are one surface there. A pair whose slave and master are one surface,
+  !> or two pairs on the same slave and master surfaces, are refused here
+  !> by the surfaces the names resolve to. Names that resolve to no
+  !> surface are left to init_contact_pairs, which says what they are.
+  subroutine check_pair_surfaces(scene, mesh, err)
+    type(scene_t), intent(in) :: scene
+    type(mesh_t), intent(in) :: mesh
+    type(error_t), intent(inout) :: err
+    integer, allocatable :: ks(:), km(:)
+    integer :: i, j, np
+    character(len=:), allocatable :: where, source
+    if (.not. allocated(scene%contacts)) return
+    source = '(built in memory)'
+    if (allocated(mesh%source)) source = mesh%source
+    np = size(scene%contacts)
+    allocate(ks(np), km(np))
+    do i = 1, np
+      ks(i) = find_surface(mesh, scene%contacts(i)%slave)
+      km(i) = find_surface(mesh, scene%contacts(i)%master)
+      if (ks(i) == 0 .or. km(i) == 0) cycle
+      where = 'scene ' // scene%path // ': &contact_pair #' // str(i) // ' (slave ''' // &
+        trim(scene%contacts(i)%slave) // ''', master ''' // trim(scene%contacts(i)%master) // ''')'
+      if (ks(i) == km(i)) then
+        call raise_error(err, EXIT_INPUT, where // ': slave and master are the same surface ''' // &
+          mesh%surfaces(ks(i))%name // ''' of mesh ' // source // name_rule(mesh) // &
+          '; give the pair two surfaces, one on each body')
+        return
+      end if
+      do j = 1, i - 1
+        if (ks(j) /= ks(i) .or. km(j) /= km(i)) cycle
+        call raise_error(err, EXIT_INPUT, where // ': the same slave and master surfaces (''' // &
+          mesh%surfaces(ks(i))%name // ''', ''' // mesh%surfaces(km(i))%name // ''') as &contact_pair #' // &
+          str(j) // name_rule(mesh) // '; give each pair once (two-pass contact swaps slave and master ' // &
+          'in the second pair)')
+        return
+      end do
+    end do
+  end subroutine check_pair_surfaces
+
+  !> The lookup rule, for messages on names that resolve alike.
+  pure function name_rule(mesh) result(s)
+    type(mesh_t), intent(in) :: mesh
+    character(len=:), allocatable :: s
+    s = ''
+    if (mesh%ignore_case) s = ' (an Abaqus mesh''s names compare without regard to case)'
+  end function name_rule
 
   !> Each node's internal force starts from the first block, in the order
   !> compute_forces visits them, that touches it; claiming across the
@@ -119,17 +171,9 @@ contains
         where = 'scene ' // scene%path // ': &body ''' // trim(spec%name) // ''''
         ks = find_elem_set(mesh, spec%elset)
         if (ks == 0) then
-          if (find_node_set(mesh, spec%elset) /= 0 .or. find_surface(mesh, spec%elset) /= 0) then
-            ! a group of that name of the wrong kind (Gmsh: a physical curve or point)
-            call raise_error(err, EXIT_INPUT, where // ': ''' // trim(spec%elset) // ''' in mesh ' // &
-              mesh%source // ' is a node set or surface (Gmsh: a physical curve or point), not an element ' // &
-              'set: elset names the elements of the body (Gmsh: a physical surface; Abaqus: *ELSET or ' // &
-              'ELSET= on *ELEMENT); element sets there: ' // set_names(mesh, 'elem'))
-          else
-            call raise_error(err, EXIT_INPUT, where // ': element set ''' // trim(spec%elset) // &
-              ''' not found in mesh ' // mesh%source // '; element sets there: ' // set_names(mesh, 'elem') // &
-              '. Set elset to one of them (Gmsh: a physical surface; Abaqus: *ELSET or ELSET= on *ELEMENT).')
-          end if
+          call raise_error(err, EXIT_INPUT, where // ': elset ''' // trim(spec%elset) // ''' ' // &
+            not_found_text(mesh, spec%elset, 'elem') // '. Set elset to the element set of the body''s ' // &
+            'elements (Gmsh: a physical surface; Abaqus: *ELSET or ELSET= on *ELEMENT).')
           return
         end if
         elems = mesh%esets(ks)%elems
@@ -367,14 +411,9 @@ contains
     where = 'scene ' // scene%path // ': &boundary #' // str(ibc) // ' (set ''' // trim(bc%set) // ''')'
     is = find_surface(mesh, bc%set)
     if (is == 0) then
-      if (find_node_set(mesh, bc%set) /= 0) then
-        call raise_error(err, EXIT_INPUT, where // ': ''' // trim(bc%set) // ''' is a node set, but a ' // &
-          'traction or pressure needs a surface (Gmsh: physical curve; Abaqus: *SURFACE). Surfaces in ' // &
-          mesh%source // ': ' // set_names(mesh, 'surface'))
-      else
-        call raise_error(err, EXIT_INPUT, where // ': surface ''' // trim(bc%set) // ''' not found in mesh ' // &
-          mesh%source // '; surfaces there: ' // set_names(mesh, 'surface'))
-      end if
+      call raise_error(err, EXIT_INPUT, where // ': set ''' // trim(bc%set) // ''' ' // &
+        not_found_text(mesh, bc%set, 'surface') // '. A traction or pressure acts on a surface ' // &
+        '(Gmsh: a physical curve; Abaqus: *SURFACE, TYPE=ELEMENT).')
       return
     end if
     if (mesh%surfaces(is)%nedge == 0) then
@@ -530,16 +569,10 @@ contains
     else
       k = find_surface(mesh, name)
       if (k == 0) then
-        if (find_elem_set(mesh, name) /= 0) then
-          call raise_error(err, EXIT_INPUT, where // ': ''' // trim(name) // ''' in mesh ' // mesh%source // &
-            ' is an element set (Gmsh: a physical surface), not a node set or surface: a boundary condition ' // &
-            'acts on nodes or edges (Gmsh: a physical curve or point; Abaqus: *NSET or *SURFACE); node sets ' // &
-            'there: ' // set_names(mesh, 'node'))
-        else
-          call raise_error(err, EXIT_INPUT, where // ': no node set or surface named ''' // trim(name) // &
-            ''' in mesh ' // mesh%source // '; node sets there: ' // set_names(mesh, 'node') // &
-            '. Fix the set name, or add the set to the mesh (Gmsh: physical curve or point; Abaqus: *NSET).')
-        end if
+        call raise_error(err, EXIT_INPUT, where // ': set ''' // trim(name) // ''' ' // &
+          not_found_text(mesh, name, 'node_or_surface') // '. A boundary condition acts on nodes or ' // &
+          'edges: fix the set name, or add the set to the mesh (Gmsh: a physical curve or point; ' // &
+          'Abaqus: *NSET or *SURFACE).')
         return
       end if
       nodes = surface_nodes(mesh, k)
@@ -586,60 +619,4 @@ contains
       end if
     end do
   end subroutine resolve_amplitude
-
-  !> Comma-separated names of the mesh's sets of one kind ('node', 'elem', 'surface').
-  function set_names(mesh, kind) result(s)
-    type(mesh_t), intent(in) :: mesh
-    character(len=*), intent(in) :: kind
-    character(len=:), allocatable :: s
-    integer :: k
-    s = ''
-    select case (kind)
-    case ('node')
-      if (allocated(mesh%nsets)) then
-        do k = 1, size(mesh%nsets)
-          s = s // merge(', ', '  ', k > 1) // mesh%nsets(k)%name
-        end do
-      end if
-    case ('elem')
-      if (allocated(mesh%esets)) then
-        do k = 1, size(mesh%esets)
-          s = s // merge(', ', '  ', k > 1) // mesh%esets(k)%name
-        end do
-      end if
-    case default
-      if (allocated(mesh%surfaces)) then
-        do k = 1, size(mesh%surfaces)
-          s = s // merge(', ', '  ', k > 1) // mesh%surfaces(k)%name
-        end do
-      end if
-    end select
-    s = trim(adjustl(s))
-    if (len(s) == 0) s = '(none)'
-    ! The Gmsh reader names a physical group that $PhysicalNames does not
-    ! name by its tag: say so, or "5, 6" reads like a mistake of raccord's.
-    if (has_number_name(s)) s = s // ' (numbers: Gmsh physical groups ' // &
-      'without a name in $PhysicalNames; name them in the .geo, e.g. Physical Surface("plate") = {1};, ' // &
-      'or write the number in the deck)'
-  end function set_names
-
-  !> One of the comma-separated names of list s is a number.
-  pure logical function has_number_name(s) result(yes)
-    character(len=*), intent(in) :: s
-    integer :: a, b
-    yes = .false.
-    a = 1
-    do while (a <= len(s))
-      b = index(s(a:), ',')
-      if (b == 0) then
-        b = len(s) + 1
-      else
-        b = a + b - 1
-      end if
-      if (len_trim(s(a:b - 1)) > 0) then
-        if (verify(trim(adjustl(s(a:b - 1))), '0123456789') == 0) yes = .true.
-      end if
-      a = b + 1
-    end do
-  end function has_number_name
 end module raccord_model_build

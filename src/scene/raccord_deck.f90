@@ -36,6 +36,16 @@ module raccord_deck
 
   !> Largest &contact_pair max_iterations (read_contact).
   integer, parameter :: MAX_CONTACT_ITERATIONS = 10000
+  !> &contact_pair friction: largest Coulomb coefficient accepted, and the
+  !> one above which a warning says the value is not a measured friction
+  !> coefficient (doc/scene-reference.md, &contact_pair). Measured dry
+  !> coefficients lie below about 1.5 (rubber up to about 3); a larger mu
+  !> is a device for contact that seldom slips, and beyond 1e3 the value
+  !> changes nothing in a run: a node slips only where the tangential
+  !> traction passes mu times the pressure, so mu = 1e3 already sticks
+  !> wherever the pressure is 1e-3 of the tangential traction.
+  real(wp), parameter :: MAX_FRICTION = 1.0e3_wp
+  real(wp), parameter :: WARN_FRICTION = 10.0_wp
   !> Groups a deck may hold, and which of them may appear only once.
   character(len=*), parameter :: GROUPS(*) = [character(len=12) :: 'run', 'mesh', 'body', 'boundary', &
     'amplitude', 'time', 'output', 'contact_pair']
@@ -740,12 +750,18 @@ contains
     else if (.not. (friction >= 0.0_wp)) then
       call bad_value(deck, blk, label, 'friction', 'the friction coefficient must be >= 0', &
         'give the Coulomb coefficient, or friction = 0 for frictionless contact', err)
+    else if (friction > MAX_FRICTION) then
+      call bad_value(deck, blk, label, 'friction', 'the Coulomb coefficient must be at most ' // &
+        real_text(MAX_FRICTION) // ' (measured coefficients of dry contact lie below about 1.5; a pair ' // &
+        'slips only where the tangential traction passes friction times the pressure, so a larger value ' // &
+        'changes nothing but the round-off)', 'give the measured coefficient, or friction = ' // &
+        real_text(MAX_FRICTION) // ' for contact that should not slip', err)
     else if (.not. (search_distance >= 0.0_wp)) then
       call bad_value(deck, blk, label, 'search_distance', 'the search distance must be >= 0', &
         'give a length, or search_distance = 0 for automatic', err)
-    else if (.not. (tolerance > 0.0_wp)) then
-      call bad_value(deck, blk, label, 'tolerance', 'the solver tolerance must be > 0', &
-        'use e.g. tolerance = 1e-10', err)
+    else if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
+      call bad_value(deck, blk, label, 'tolerance', 'the solver tolerance is a relative residual: it must be ' // &
+        '> 0 and < 1', 'use e.g. tolerance = 1e-10', err)
     else if (max_iterations < 1) then
       call bad_value(deck, blk, label, 'max_iterations', 'the iteration cap must be >= 1', &
         'use e.g. max_iterations = 200', err)
@@ -822,6 +838,15 @@ contains
         '(with the weighted conditions the corner space let contact give energy on a Q8 ball)', err)
       return
     end if
+    if (friction > WARN_FRICTION) call log_warn('read_deck', head(deck, blk, blk%key_line('friction'), label) // &
+      ': friction = ' // real_text(friction) // ' is above the Coulomb coefficients measured for dry contact ' // &
+      '(below about 1.5); accepted: the pair slips only where the tangential traction passes ' // &
+      real_text(friction) // ' times the contact pressure. If that is not meant, give the measured coefficient')
+    ! The multiplier solve is direct (banded LU) and ends when its active
+    ! sets repeat (raccord_multiplier_solver): no residual is compared.
+    if (blk%find('tolerance') > 0) call log_warn('read_deck', head(deck, blk, blk%key_line('tolerance'), &
+      label) // ': tolerance has no effect: the multiplier solve is direct and ends when its active sets ' // &
+      'repeat (max_iterations caps it); remove the key')
     spec%slave = trim(slave)
     spec%master = trim(master)
     spec%friction = friction

@@ -50,7 +50,8 @@
 #   and the families of make_cases_hostile.sh (sizes, overflow, paths,
 #   damage, meshmix, threads, validdeck, messages) and of
 #   make_cases_features.sh (axi, finite, plastic, pairs, loops, mscale,
-#   abaqus, gmshphys, restart, fmutate), described there.
+#   abaqus, gmshphys, restart, fmutate), described there, and of
+#   make_cases_names.sh (names, bounds).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -807,5 +808,8 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # mortar conditions, closed loops, mass scaling, CAX8 surfaces, Gmsh
 # physical groups, restarts of frictional contact), described there.
 . "$(dirname "$0")/make_cases_features.sh"
+# The deck's names against the mesh's (case rules of each format, names of
+# the wrong kind) and the bounds of the deck's numbers, described there.
+. "$(dirname "$0")/make_cases_names.sh"
 
 echo "make_cases: $ncase cases in $cases"

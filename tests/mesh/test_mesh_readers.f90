@@ -109,6 +109,9 @@ contains
     k = find_surface(m, 'base')
     call check(failure, k > 0, 'no surface base')
     if (allocated(failure)) return
+    ! Gmsh names compare exactly (Gmsh's physical names are case-sensitive)
+    call check(failure, find_surface(m, 'Base') == 0 .and. find_node_set(m, 'BASE') == 0 .and. &
+      find_elem_set(m, 'Body') == 0, 'a Gmsh name found in another case')
     call check(failure, m%surfaces(k)%nedge == 8 .and. m%surfaces(k)%nen_edge == 2, 'base: 8 two-node edges')
     k = find_node_set(m, 'base')
     call check(failure, k > 0, 'no node set base')
@@ -220,8 +223,13 @@ contains
     ! sets defined by GENERATE and by the name of another set
     call check(failure, size(elem_set_centroids(inp, 'lower'), 2) == 3, 'rect.inp: elset lower (GENERATE) has 3')
     call check(failure, size(node_set_points(inp, 'left'), 2) == 3, 'rect.inp: nset left has 3 nodes')
-    call check(failure, find_elem_set(inp, 'PLATE') == 0 .and. size(inp%esets) == 3, &
-      'rect.inp: ELSET=plate and ELSET=PLATE are one set, spelt as first defined')
+    ! one set, spelt as first defined, found in any case (Abaqus labels
+    ! are case-insensitive: doc/mesh-formats.md, "Set and surface names")
+    call check(failure, find_elem_set(inp, 'PLATE') == find_elem_set(inp, 'plate') .and. &
+      find_elem_set(inp, 'Plate') == find_elem_set(inp, 'plate') .and. find_elem_set(inp, 'plate') > 0 .and. &
+      size(inp%esets) == 3, 'rect.inp: ELSET=plate and ELSET=PLATE are one set, found in any case')
+    if (find_elem_set(inp, 'plate') > 0) call check(failure, inp%esets(find_elem_set(inp, 'plate'))%name == 'plate', &
+      'rect.inp: the set keeps the spelling of its first definition')
   end subroutine test_rect_formats
 
   subroutine test_rect_normals(failure)
