@@ -359,6 +359,7 @@ contains
     character(len=*), intent(in) :: what
     integer :: i, worst
     real(wp) :: vmax
+    character(len=:), allocatable :: hint
     worst = 0
     vmax = -1.0_wp
     do i = 1, model%nnode
@@ -371,9 +372,17 @@ contains
         worst = i
       end if
     end do
+    ! At step 0 nothing has been integrated yet: the scene's own numbers
+    ! overflow (an initial velocity of 1e300 squares to Inf), not the step.
+    if (state%step == 0) then
+      hint = '. The initial state already overflows, before any time step: the scene''s magnitudes ' // &
+        '(&body velocity, loads, body_force, material data) are too large for double precision; check ' // &
+        'their values and units.'
+    else
+      hint = '. The run is unstable: reduce &time safety or dt, check the material data and loads.'
+    end if
     call raise_error(err, EXIT_NUMERIC, what // ' at step ' // str(state%step) // ', t = ' // &
-      str(state%time) // '; first non-finite (or fastest) node: ' // str(mesh%node_id(max(1, worst))) // &
-      '. The run is unstable: reduce &time safety or dt, check the material data and loads.')
+      str(state%time) // '; first non-finite (or fastest) node: ' // str(mesh%node_id(max(1, worst))) // hint)
     call finish(err)
   end subroutine stop_non_finite
 

@@ -298,6 +298,21 @@ nonfinite)
   esac
   ;;
 
+nonfinite_initial)
+  # A finite but absurd initial velocity (1e300 mm/s) squares to Inf in the
+  # kinetic energy of t = 0: exit 3, and the message blames the scene's
+  # magnitudes (nothing was integrated yet), not the time step.
+  cp "$data/nonfinite.nml" "$data/bar_coarse.msh" "$work/"
+  sed -e 's/^&amplitude.*$//' -e 's/, amplitude = .blow_up.//' \
+    -e "s/hypothesis = 'plane_stress'/hypothesis = 'plane_stress', velocity = 1.0e300, 0.0/" \
+    "$work/nonfinite.nml" > "$work/initial.nml"
+  run --output out initial.nml
+  expect_code 3
+  expect_text "$work/stderr.txt" 'non-finite energy at step 0' "stderr"
+  expect_text "$work/stderr.txt" 'initial state already overflows' "stderr"
+  expect_nothing_complete
+  ;;
+
 nonfinite_trapped)
   # The same scene in a build that traps overflow (Debug): the process dies
   # on SIGFPE where the overflow happens; it must not leave a file that
