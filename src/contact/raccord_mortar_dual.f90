@@ -16,7 +16,8 @@
 !> (raccord_mortar) on the edge's own geometry (|dx/dxi|, and 2 pi r in
 !> axisymmetry), so a fully covered edge integrated in one piece has a
 !> G1 diagonal to round-off even on curved Q8 edges; on a straight edge
-!> with a centred mid node the rule is exact and A is the constant
+!> with a centred mid node the rule is exact and A is the constant (taken
+!> as such for 2-node edges in plane strain and plane stress)
 !>   2-node: [2 -1; -1 2]
 !>   3-node (start, end, mid): [3/2 1/2 -1/4; 1/2 3/2 -1/4; -1 -1 3/2]
 !> (tools/mortar/dual_coefficients.py derives them exactly).
@@ -54,6 +55,12 @@ contains
     logical :: ok
 
     a = 0.0_wp
+    ! A straight 2-node edge in plane strain/stress has a constant Jacobian:
+    ! A is the closed form (exact, and no integration per step).
+    if (nen == 2 .and. .not. axisymmetric) then
+      a(1:2, 1:2) = DUAL_A2
+      return
+    end if
     m = 0.0_wp
     d = 0.0_wp
     do g = 1, 3
