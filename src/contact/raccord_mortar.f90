@@ -267,7 +267,7 @@ contains
       w%mend(k) = w%nment
     end do slave_segments
     call find_corner_rows(slave, master, x, reach, v, w)
-    call merge_uncovered(slave, w)
+    call merge_uncovered(slave, v, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
     ! And of each slave shape function: sum_k G1(j, k) (sum_k psi_k = 1), the
@@ -815,10 +815,11 @@ contains
   !> and as that segment turns (a block tipping over the master's corner)
   !> the constraint does work on the bodies, giving energy back
   !> (doc/verification.md section 13).
-  subroutine merge_uncovered(slave, w)
+  subroutine merge_uncovered(slave, vl, w)
     type(contact_surface_t), intent(in) :: slave
+    type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, b, bb, target, nen, e, t
+    integer :: k, b, bb, target, nen, e, t, nt
     real(wp) :: dist, best
     nen = slave%nen_seg
     ! Only where the master ends: the slave segments an end corner of the
@@ -826,11 +827,21 @@ contains
     ! stops short of it stops there because the master beyond is out of
     ! reach or faces away, and the standard basis is kept (the paper's
     ! scenes, whose master arcs end far from the contact, are unchanged).
-    ! The dual basis too (doc/theory-contact-mortar.md section 9: applying
-    ! it on every partly covered segment changed nothing measured but the
-    ! frictionless ironing press, for the worse).
-    do t = 1, w%ncrow
-      k = w%crow_seg(t)
+    ! Dual basis: on every slave segment the overlap covers in part
+    ! (raccord_mortar_dual; doc/theory-contact-mortar.md section 9): a dual
+    ! psi_j is not small at the far end of its support (Q4: -1/2, Q8
+    ! corner: +1/2 at the other corner), so the row of a node beyond the
+    ! overlap's end would weigh the same sliver as its covered neighbour's
+    ! row, nearly parallel to it. Without this the paper's Q8 deck
+    ! (Fig. 4(a)) blew up at t = 4.5e-6 s with dual multipliers.
+    nt = w%ncrow
+    if (w%multiplier == MULT_DUAL) nt = w%ncrow + vl%nnear
+    do t = 1, nt
+      if (t <= w%ncrow) then
+        k = w%crow_seg(t)
+      else
+        k = vl%near(t - w%ncrow)
+      end if
       do b = 1, nen
         if (w%covered(w%pos(b, k))) cycle
         if (all(w%g1loc(1:nen, b, k) == 0.0_wp)) cycle
