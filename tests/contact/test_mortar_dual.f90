@@ -11,7 +11,7 @@
 !>   test_paper_stick).
 !> `test_mortar_dual full` (CTest `mortar_dual_full`, slow) adds the
 !> moderate Hertz mesh with both slaves, the paper's slave swap (Fig. 2(a),
-!> fine Q4) and Fig. 3 with mu = 0.2.
+!> fine Q4), Fig. 3 with mu = 0.2 and the paper's Q8 deck (Fig. 4(a)).
 program test_mortar_dual
   use raccord_kinds, only: wp
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
@@ -37,7 +37,8 @@ program test_mortar_dual
     call run_tests('mortar_dual', [ &
       new_test('full: Hertz, moderate Q4, slave = block and slave = cylinder: dual against P1', test_hertz_moderate), &
       new_test('full: paper Fig. 2(a), slave swap with dual multipliers', test_swap), &
-      new_test('full: Fig. 3, mu = 0.2: dual stick traction smooth', test_stick_020)])
+      new_test('full: Fig. 3, mu = 0.2: dual stick traction smooth', test_stick_020), &
+      new_test('full: Fig. 4(a), Q8, frictionless: dual converges, gives no energy', test_q8)])
   end if
 
 contains
@@ -224,6 +225,28 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call stick_case(failure, 'fig3_mortar_p1_mu050.nml', 0.5_wp)
   end subroutine test_stick_050
+
+  !> The paper's Q8 deck with dual multipliers to t = T: without the
+  !> boundary modification on every partly covered segment
+  !> (raccord_mortar's merge_uncovered) it blew up at 4.5e-6 s.
+  subroutine test_q8(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    character(len=*), parameter :: deck = 'fig4a_q8_mortar_p1.nml'
+    type(scene_run_t) :: run
+    type(error_t) :: err
+    type(profile_t) :: p
+    call run_deck('input/paper/' // deck, run, err, t_stop=T_MAX, multiplier=MULT_DUAL)
+    call check(failure, .not. err%failed(), deck // ' failed')
+    if (allocated(failure)) return
+    call profile_of_run(run, p)
+    write(*, '(a,i0,a,es10.3,a,f9.1)') '        ' // deck // ' dual: unconverged steps ', run%pairs(1)%failed_total, &
+      ', least contact work / largest internal energy ', run%min_contact_work/run%max_internal, ', max lam_n ', &
+      maxval(p%lam)
+    call check(failure, run%pairs(1)%failed_total == 0, deck // ': unconverged multiplier steps')
+    call check(failure, run%min_contact_work >= -1.0e-4_wp*run%max_internal, deck // ': contact gave energy')
+    call check(failure, abs(run%state%energy%balance) < 1.0e-10_wp*run%state%energy%scale, &
+      deck // ': energy balance not exact')
+  end subroutine test_q8
 
   subroutine test_stick_020(failure)
     type(failure_t), allocatable, intent(out) :: failure
