@@ -829,7 +829,7 @@ contains
     ! scenes, whose master arcs end far from the contact, are unchanged).
     ! Dual basis: on every slave segment the overlap covers in part
     ! (raccord_mortar_dual; doc/theory-contact-mortar.md section 9): a dual
-    ! psi_j is not small at the far end of its support (Q4: -1/2, Q8
+    ! psi_j is not small at the far end of its support (Q4: -1, Q8
     ! corner: +1/2 at the other corner), so the row of a node beyond the
     ! overlap's end would weigh the same sliver as its covered neighbour's
     ! row, nearly parallel to it. Without this the paper's Q8 deck
