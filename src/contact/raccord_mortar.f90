@@ -39,6 +39,7 @@ module raccord_mortar
   use raccord_segment, only: segment_point
   use raccord_mortar_segments, only: NODE_XI, outward_normal, normal_field, end_offset, root_along_field, &
     intersect_ray, multiplier_basis, multiplier_breaks
+  use raccord_mortar_dual, only: dual_coefficients, dual_basis
   implicit none
   private
 
@@ -79,6 +80,8 @@ module raccord_mortar
     !> &contact_pair edge_multipliers = 'corners', opt-in: doc/theory-contact-mortar.md
     !> section 1); otherwise one on every trace node
     logical :: corners = .false.
+    !> multiplier = 'dual': A of the current slave segment (raccord_mortar_dual)
+    real(wp) :: adual(3, 3) = 0.0_wp
     integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
     integer, allocatable :: nadj(:)           !< (nnode) segments a chain node belongs to (1 or 2)
     integer, allocatable :: adj_seg(:,:)      !< (2, nnode) those segments
@@ -139,13 +142,8 @@ contains
     type(error_t), intent(inout) :: err
     integer :: k, a, c, stride, ns, nn, nc
 
-    if (multiplier == MULT_DUAL) then
-      call raise_error(err, EXIT_INPUT, where // ': multiplier ''dual'' (Wohlmuth''s dual basis) is not ' // &
-        'available with method ''mortar'' in this version; use multiplier = ''P1'' or ''P0'' (paper, (8)-(11)).')
-      return
-    end if
-    if (multiplier /= MULT_P1 .and. multiplier /= MULT_P0) then
-      call raise_error(err, EXIT_INPUT, where // ': unknown mortar multiplier space; use ''P1'' or ''P0''.')
+    if (multiplier /= MULT_P1 .and. multiplier /= MULT_P0 .and. multiplier /= MULT_DUAL) then
+      call raise_error(err, EXIT_INPUT, where // ': unknown mortar multiplier space; use ''P1'', ''P0'' or ''dual''.')
       return
     end if
     w%multiplier = multiplier
@@ -199,8 +197,8 @@ contains
 
   !> Constraints of the slave multipliers that meet the master within
   !> `reach`: geometry on x (t(n)), weighted gaps on xpred (predicted
-  !> t(n+1)), weighted slip on the increments du. `multiplier` is MULT_P1 or
-  !> MULT_P0 (as given to init_mortar).
+  !> t(n+1)), weighted slip on the increments du. `multiplier` is MULT_P1,
+  !> MULT_P0 or MULT_DUAL (as given to init_mortar).
   subroutine build_mortar(slave, master, x, xpred, du, reach, multiplier, v, cs, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
@@ -245,6 +243,8 @@ contains
         nn(:, a) = w%nrm(:, w%pos(a, k))
       end do
       call clear_segment(w, k)
+      ! Dual basis: biorthogonal over this whole edge (raccord_mortar_dual).
+      if (multiplier == MULT_DUAL) call dual_coefficients(nen, xs, slave%axisymmetric, w%adual)
       lo = xs(:, 1)
       hi = xs(:, 1)
       do a = 2, nen
@@ -267,7 +267,7 @@ contains
       w%mend(k) = w%nment
     end do slave_segments
     call find_corner_rows(slave, master, x, reach, v, w)
-    call merge_uncovered(slave, w)
+    call merge_uncovered(slave, v, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
     ! And of each slave shape function: sum_k G1(j, k) (sum_k psi_k = 1), the
@@ -539,6 +539,9 @@ contains
         ! A multiplier on every trace node of a 3-node edge (not
         ! w%corners): a corner's weight is 1/4 of the edge.
         if (nen == 3 .and. .not. w%corners .and. w%adj_loc(tt, cc) /= 3) frac = 0.25_wp
+        ! Dual basis: integral of psi_j = integral of N_j, 1/6 (corner) or
+        ! 2/3 (mid node) of a 3-node edge.
+        if (nen == 3 .and. w%multiplier == MULT_DUAL) frac = merge(2.0_wp/3.0_wp, 1.0_wp/6.0_wp, w%adj_loc(tt, cc) == 3)
         if (slave%axisymmetric) frac = frac*pi*abs(xa(1) + xb(1))
         wf = wf + frac*norm2(xb - xa)
       end do
@@ -613,6 +616,9 @@ contains
     ! Split at the discontinuities of psi (P0: dual-cell bounds z_i; P1 on
     ! 3-node edges: the mid node) so that each piece is smooth.
     call multiplier_breaks(nen, w%multiplier, w%corners, nb, brk)
+    ! The dual basis is one polynomial over the edge: one piece, the rule
+    ! its coefficients were integrated with (raccord_mortar_dual).
+    if (w%multiplier == MULT_DUAL) nb = 0
     bounds(1) = s0
     a = 1
     do ib = 1, nb
@@ -650,7 +656,11 @@ contains
         tm = xm(:, 1)*dnm(1) + xm(:, 2)*dnm(2)
         if (nenm == 3) tm = tm + xm(:, 3)*dnm(3)
         nu = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
-        call multiplier_basis(nen, w%multiplier, w%corners, xi, psi)
+        if (w%multiplier == MULT_DUAL) then
+          call dual_basis(nen, w%adual, ns, psi)
+        else
+          call multiplier_basis(nen, w%multiplier, w%corners, xi, psi)
+        end if
         do b = 1, nen
           if (psi(b) == 0.0_wp) cycle
           ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
@@ -689,7 +699,7 @@ contains
     integer :: a, b, g, ib, np
     real(wp) :: xm1(2), xm2(2), ts(2), tm(2), xi, wgt, ps(2), n(2), eta, pm(2), dg, ns(2), nm(2), psi(2), &
       mloc(2, 2), bounds(3), lo, hi, dgw, nu(2)
-    logical :: p0
+    logical :: p0, dual
 
     xm1 = x(:, master%seg(1, l))
     xm2 = x(:, master%seg(2, l))
@@ -713,6 +723,7 @@ contains
     end do
     ! P0 on a 2-node edge: psi jumps at xi = 0 (multiplier_breaks).
     p0 = w%multiplier == MULT_P0
+    dual = w%multiplier == MULT_DUAL
     bounds(1) = s0
     np = 1
     if (p0 .and. 0.0_wp > s0 .and. 0.0_wp < s1) then
@@ -744,6 +755,10 @@ contains
         ! the dual cells [-1, 0), [0, 1].
         if (p0) then
           psi = merge([1.0_wp, 0.0_wp], [0.0_wp, 1.0_wp], xi < 0.0_wp)
+        else if (dual) then
+          ! psi_i = sum_j A(i, j) N_j (raccord_mortar_dual)
+          psi(1) = w%adual(1, 1)*ns(1) + w%adual(1, 2)*ns(2)
+          psi(2) = w%adual(2, 1)*ns(1) + w%adual(2, 2)*ns(2)
         else
           psi = ns
         end if
@@ -800,10 +815,11 @@ contains
   !> and as that segment turns (a block tipping over the master's corner)
   !> the constraint does work on the bodies, giving energy back
   !> (doc/verification.md section 13).
-  subroutine merge_uncovered(slave, w)
+  subroutine merge_uncovered(slave, vl, w)
     type(contact_surface_t), intent(in) :: slave
+    type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, b, bb, target, nen, e, t
+    integer :: k, b, bb, target, nen, e, t, nt
     real(wp) :: dist, best
     nen = slave%nen_seg
     ! Only where the master ends: the slave segments an end corner of the
@@ -811,8 +827,21 @@ contains
     ! stops short of it stops there because the master beyond is out of
     ! reach or faces away, and the standard basis is kept (the paper's
     ! scenes, whose master arcs end far from the contact, are unchanged).
-    do t = 1, w%ncrow
-      k = w%crow_seg(t)
+    ! Dual basis: on every slave segment the overlap covers in part
+    ! (raccord_mortar_dual; doc/theory-contact-mortar.md section 9): a dual
+    ! psi_j is not small at the far end of its support (Q4: -1, Q8
+    ! corner: +1/2 at the other corner), so the row of a node beyond the
+    ! overlap's end would weigh the same sliver as its covered neighbour's
+    ! row, nearly parallel to it. Without this the paper's Q8 deck
+    ! (Fig. 4(a)) blew up at t = 4.5e-6 s with dual multipliers.
+    nt = w%ncrow
+    if (w%multiplier == MULT_DUAL) nt = w%ncrow + vl%nnear
+    do t = 1, nt
+      if (t <= w%ncrow) then
+        k = w%crow_seg(t)
+      else
+        k = vl%near(t - w%ncrow)
+      end if
       do b = 1, nen
         if (w%covered(w%pos(b, k))) cycle
         if (all(w%g1loc(1:nen, b, k) == 0.0_wp)) cycle

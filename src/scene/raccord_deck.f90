@@ -832,6 +832,12 @@ contains
         'method = ''mortar''', err)
       return
     end if
+    if (spec%corners .and. spec%multiplier == MULT_DUAL) then
+      call bad_value(deck, blk, label, 'edge_multipliers', 'edge_multipliers = ''corners'' works with ' // &
+        'multiplier = ''P1'' or ''P0''', 'the dual basis has a multiplier at every node of the edge, ' // &
+        'biorthogonal to its shape functions; remove the key or use ''P1''', err)
+      return
+    end if
     if (spec%corners .and. spec%weighted) then
       call bad_value(deck, blk, label, 'edge_multipliers', 'edge_multipliers = ''corners'' works with the ' // &
         'paper''s conditions only', 'use conditions = ''nodal'' (the default) with it, or remove the key ' // &

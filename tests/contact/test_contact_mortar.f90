@@ -22,6 +22,8 @@ program test_contact_mortar
   use raccord_constraint_set, only: constraint_set_t
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs
   use raccord_mortar, only: mortar_work_t, init_mortar, build_mortar
+  use raccord_mortar_dual, only: dual_coefficients, dual_basis, DUAL_A2, DUAL_A3
+  use raccord_shape, only: shape_line
   use raccord_multiplier_solver, only: ST_OPEN
   use raccord_test_meshes, only: rect_mesh, join_meshes
   use dynamics_support, only: one_body_scene, add_bc, add_body, add_pair, contact_step, &
@@ -37,7 +39,10 @@ program test_contact_mortar
       test_g1_q8_corners), &
     new_test('G21 reproduces 1 and x on non-matching meshes (Q4, Q8; P1, P0)', test_g21_reproduces), &
     new_test('G21 equals G1 on matching meshes (Q4, Q8; P1, P0)', test_g21_matching), &
-    new_test('dual multipliers are refused with a message', test_refusals), &
+    new_test('an unknown multiplier space is refused with a message', test_refusals), &
+    new_test('dual basis: biorthogonal on 2- and 3-node edges (straight, curved, axisymmetric)', test_dual_basis), &
+    new_test('G1 diagonal with dual multipliers on uniform Q4 and Q8 slave meshes', test_g1_dual), &
+    new_test('patch tests with dual multipliers (Q4, Q8, fine side as slave; both conditions)', test_patch_dual), &
     new_test('patch test, non-matching Q4 (slave 3 graded, master 11): P1 and P0 uniform', test_patch_q4), &
     new_test('patch test, non-matching Q8 (slave 2 graded, master 7): P1 and P0 uniform', test_patch_q8), &
     new_test('patch test, non-matching Q8, corner multipliers: P1 and P0 uniform', &
@@ -283,11 +288,11 @@ contains
   subroutine test_g21_reproduces(failure)
     type(failure_t), allocatable, intent(out) :: failure
     integer :: it, ie, im
-    integer, parameter :: etypes(2) = [ELEM_Q4, ELEM_Q8], mults(2) = [MULT_P1, MULT_P0]
+    integer, parameter :: etypes(2) = [ELEM_Q4, ELEM_Q8], mults(3) = [MULT_P1, MULT_P0, MULT_DUAL]
     real(wp) :: worst
     worst = 0.0_wp
     do ie = 1, 2
-      do im = 1, 2
+      do im = 1, 3
         do it = 1, 2
           ! it = 1: master covers the slave; it = 2: master starts at x = 0.23.
           call reproduction_case(failure, etypes(ie), mults(im), merge(-0.17_wp, 0.23_wp, it == 1), worst)
@@ -391,11 +396,161 @@ contains
     call build_contact_surface(mesh, 'b_bottom', 'slave', slave, err)
     call build_contact_surface(mesh, 'a_top', 'master', master, err)
     call init_mortar(slave, master, MULT_DUAL, 'pair #1', w, err)
-    call check(failure, err%failed(), 'MULT_DUAL accepted')
+    call check(failure, .not. err%failed(), 'MULT_DUAL refused')
     if (allocated(failure)) return
-    call check(failure, index(err%message, 'pair #1') > 0 .and. index(err%message, 'P1') > 0, &
+    call init_mortar(slave, master, 99, 'pair #1', w, err)
+    call check(failure, err%failed(), 'an unknown multiplier space accepted')
+    if (allocated(failure)) return
+    call check(failure, index(err%message, 'pair #1') > 0 .and. index(err%message, 'dual') > 0, &
       'message should name the pair and the alternatives: ' // err%message)
   end subroutine test_refusals
+
+  ! ------------------------------------------------------------- dual basis
+
+  !> raccord_mortar_dual: A = D M^-1 on one edge. Biorthogonality
+  !> integral psi_i N_j dGamma = delta_ij integral N_j dGamma and
+  !> sum_i psi_i = 1, by a 6-point Gauss rule independent of the 3-point
+  !> one A is built with (exact for the straight edges' integrands of degree
+  !> <= 5, and for the axisymmetric ones), on straight 2- and 3-node edges
+  !> (where A must equal the closed forms DUAL_A2, DUAL_A3 of
+  !> tools/mortar/dual_coefficients.py), an axisymmetric straight edge, and
+  !> a curved 3-node edge (mid node off the chord; the 3-point rule is then
+  !> what G1 uses, so the check there is against that rule).
+  subroutine test_dual_basis(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp), parameter :: g6(6) = [-0.93246951420315203_wp, -0.66120938646626451_wp, -0.23861918608319691_wp, &
+      0.23861918608319691_wp, 0.66120938646626451_wp, 0.93246951420315203_wp]
+    real(wp), parameter :: w6(6) = [0.17132449237917035_wp, 0.36076157304813861_wp, 0.46791393457269105_wp, &
+      0.46791393457269105_wp, 0.36076157304813861_wp, 0.17132449237917035_wp]
+    real(wp), parameter :: g3(3) = [-0.774596669241483377_wp, 0.0_wp, 0.774596669241483377_wp]
+    real(wp), parameter :: w3(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
+    real(wp) :: xs(2, 3), a(3, 3), worst
+    integer :: ic, nen
+    logical :: axi
+    worst = 0.0_wp
+    do ic = 1, 5
+      ! 1, 2: straight 2-node, plane / axisymmetric; 3, 4: straight 3-node
+      ! (centred mid node), plane / axisymmetric; 5: curved 3-node, plane.
+      nen = merge(2, 3, ic <= 2)
+      axi = ic == 2 .or. ic == 4
+      xs = 0.0_wp
+      xs(:, 1) = [0.3_wp, 0.7_wp]
+      xs(:, 2) = [1.1_wp, 0.2_wp]
+      xs(:, 3) = 0.5_wp*(xs(:, 1) + xs(:, 2))
+      if (ic == 5) xs(:, 3) = xs(:, 3) + [0.08_wp, 0.06_wp]
+      call dual_coefficients(nen, xs, axi, a)
+      if (ic == 1) call check(failure, maxval(abs(a(1:2, 1:2) - DUAL_A2)) <= 1.0e-14_wp, &
+        'A of a straight 2-node edge differs from [2 -1; -1 2]')
+      if (ic == 3) call check(failure, maxval(abs(a - DUAL_A3)) <= 1.0e-14_wp, &
+        'A of a straight 3-node edge differs from its closed form')
+      if (ic <= 4) then
+        call biorthogonal(failure, nen, xs, axi, a, g6, w6, worst)
+      else
+        call biorthogonal(failure, nen, xs, axi, a, g3, w3, worst)
+      end if
+      if (allocated(failure)) return
+    end do
+    write(*, '(a,es10.3)') '        max |int psi_i N_j - delta_ij int N_j| / int N_j, and |sum psi - 1|: ', worst
+  end subroutine test_dual_basis
+
+  !> test_dual_basis on one edge, with the rule (gp, gw).
+  subroutine biorthogonal(failure, nen, xs, axi, a, gp, gw, worst)
+      type(failure_t), allocatable, intent(inout) :: failure
+      integer, intent(in) :: nen
+      real(wp), intent(in) :: xs(2, 3), a(3, 3), gp(:), gw(:)
+      logical, intent(in) :: axi
+      real(wp), intent(inout) :: worst
+      real(wp) :: e(3, 3), d(3), sh(3), dsh(3), psi(3), p(2), t(2), dg, err
+      integer :: g, i, j
+      e = 0.0_wp
+      d = 0.0_wp
+      do g = 1, size(gp)
+        call shape_line(nen, gp(g), sh, dsh)
+        call dual_basis(nen, a, sh, psi)
+        worst = max(worst, abs(sum(psi(1:nen)) - 1.0_wp))
+        p = matmul(xs(:, 1:nen), sh(1:nen))
+        t = matmul(xs(:, 1:nen), dsh(1:nen))
+        dg = norm2(t)*gw(g)
+        if (axi) dg = dg*2.0_wp*3.14159265358979324_wp*p(1)
+        do j = 1, nen
+          d(j) = d(j) + sh(j)*dg
+          do i = 1, nen
+            e(i, j) = e(i, j) + psi(i)*sh(j)*dg
+          end do
+        end do
+      end do
+      do j = 1, nen
+        do i = 1, nen
+          err = abs(e(i, j) - merge(d(j), 0.0_wp, i == j))/d(j)
+          worst = max(worst, err)
+          call check(failure, err <= 1.0e-14_wp, 'dual basis not biorthogonal')
+        end do
+      end do
+  end subroutine biorthogonal
+
+  !> With dual multipliers G1 of a fully covered slave is diagonal,
+  !> G1(j, j) = integral of N_j: Q4 h (h/2 at the ends); Q8 corners H/3
+  !> (H/6 at the ends), mid nodes 2H/3 (non-matching master, 5 slave and 7
+  !> master segments, as test_g1_p1). cs%length(j) = integral of psi_j is the
+  !> same.
+  subroutine test_g1_dual(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    integer, parameter :: etypes(2) = [ELEM_Q4, ELEM_Q8]
+    type(mesh_t) :: mesh
+    type(contact_surface_t) :: slave, master
+    type(constraint_set_t) :: cs
+    real(wp), allocatable :: g1(:,:), expect(:,:)
+    real(wp) :: h, worst
+    integer :: ie, i, n
+    worst = 0.0_wp
+    h = 0.2_wp
+    do ie = 1, 2
+      call coupling(etypes(ie), MULT_DUAL, 5, 7, -0.3_wp, 1.6_wp, 0.0_wp, mesh, slave, master, cs, failure)
+      if (allocated(failure)) return
+      n = slave%nnode
+      call check(failure, cs%m == n, 'every slave node should carry a multiplier')
+      if (allocated(failure)) return
+      call g1_matrix(slave, cs, g1)
+      allocate(expect(n, n), source=0.0_wp)
+      do i = 1, n
+        if (etypes(ie) == ELEM_Q4) then
+          expect(i, i) = merge(0.5_wp, 1.0_wp, i == 1 .or. i == n)*h
+        else if (mod(i, 2) == 0) then
+          expect(i, i) = 2.0_wp*h/3.0_wp
+        else
+          expect(i, i) = merge(1.0_wp/6.0_wp, 1.0_wp/3.0_wp, i == 1 .or. i == n)*h
+        end if
+      end do
+      worst = max(worst, maxval(abs(g1 - expect))/h)
+      call check(failure, maxval(abs(g1 - expect)) <= 1.0e-14_wp*h, 'dual G1 is not diag(integral of N_j)')
+      do i = 1, n
+        call check_close(failure, cs%length(i), expect(i, i), 'length(j) = integral of psi_j', abs_tol=1.0e-14_wp*h)
+      end do
+      deallocate(expect)
+      if (allocated(failure)) return
+    end do
+    write(*, '(a,es10.3)') '        max |G1 - diag(int N_j)| / h = ', worst
+  end subroutine test_g1_dual
+
+  !> The contact patch tests of test_patch_q4, test_patch_q8 and
+  !> test_patch_fine_slave with dual multipliers, under both conditions.
+  subroutine test_patch_dual(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp) :: e4, e8, ef
+    integer :: ic
+    do ic = 1, 2
+      call patch_case(failure, ELEM_Q4, 11, 3, METHOD_MORTAR, MULT_DUAL, .true., e4, weighted=ic == 2)
+      if (allocated(failure)) return
+      call patch_case(failure, ELEM_Q8, 7, 2, METHOD_MORTAR, MULT_DUAL, .true., e8, weighted=ic == 2)
+      if (allocated(failure)) return
+      call patch_case(failure, ELEM_Q4, 11, 3, METHOD_MORTAR, MULT_DUAL, .false., ef, weighted=ic == 2)
+      if (allocated(failure)) return
+      write(*, '(3a,3es10.3)') '        dual, conditions ', trim(merge('nodal   ', 'weighted', ic == 1)), &
+        ': max |lambda - mean|/p Q4, Q8, fine slave ', e4, e8, ef
+      call check(failure, max(e4, e8, ef) <= 1.0e-8_wp, 'dual multipliers not uniform in the patch test')
+      if (allocated(failure)) return
+    end do
+  end subroutine test_patch_dual
 
   ! ------------------------------------------------------------- dynamics
 

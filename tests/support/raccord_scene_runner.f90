@@ -4,7 +4,7 @@
 module raccord_scene_runner
   use raccord_kinds, only: wp
   use raccord_error, only: error_t
-  use raccord_scene, only: scene_t
+  use raccord_scene, only: scene_t, METHOD_MORTAR
   use raccord_deck, only: read_scene
   use raccord_mesh, only: mesh_t
   use raccord_mesh_io, only: read_mesh
@@ -37,14 +37,19 @@ contains
   !> Run the deck at `path` (relative paths against RACCORD_SOURCE_DIR when
   !> set, except ./... paths, which stay relative to the working folder) to
   !> its end, or to t_stop when given. undamped_body names a body whose
-  !> damping is set to 0 (a test's counter-case of a deck as shipped).
-  subroutine run_deck(path, run, err, t_stop, undamped_body)
+  !> damping is set to 0 (a test's counter-case of a deck as shipped);
+  !> multiplier (MULT_*) replaces the multiplier space of every mortar pair,
+  !> weighted its conditions (.true.: 'weighted'; a test's variant of a
+  !> shipped deck).
+  subroutine run_deck(path, run, err, t_stop, undamped_body, multiplier, weighted)
     character(len=*), intent(in) :: path
     type(scene_run_t), intent(out) :: run
     type(error_t), intent(inout) :: err
     real(wp), intent(in), optional :: t_stop
     character(len=*), intent(in), optional :: undamped_body
-    call prepare_deck(path, run, err, undamped_body)
+    integer, intent(in), optional :: multiplier
+    logical, intent(in), optional :: weighted
+    call prepare_deck(path, run, err, undamped_body, multiplier, weighted)
     if (err%failed()) return
     do
       call step_predict(run, err)
@@ -61,11 +66,13 @@ contains
 
   !> The phases of the program before its time loop: the scene, the mesh,
   !> the model, the contact pairs, the time plan and the state at t = 0.
-  subroutine prepare_deck(path, run, err, undamped_body)
+  subroutine prepare_deck(path, run, err, undamped_body, multiplier, weighted)
     character(len=*), intent(in) :: path
     type(scene_run_t), intent(out) :: run
     type(error_t), intent(inout) :: err
     character(len=*), intent(in), optional :: undamped_body
+    integer, intent(in), optional :: multiplier
+    logical, intent(in), optional :: weighted
     character(len=512) :: root
     character(len=:), allocatable :: full
     integer :: length, stat, b
@@ -77,6 +84,16 @@ contains
     if (present(undamped_body)) then
       do b = 1, size(run%scene%bodies)
         if (run%scene%bodies(b)%name == undamped_body) run%scene%bodies(b)%damping = 0.0_wp
+      end do
+    end if
+    if (present(multiplier) .and. allocated(run%scene%contacts)) then
+      do b = 1, size(run%scene%contacts)
+        if (run%scene%contacts(b)%method == METHOD_MORTAR) run%scene%contacts(b)%multiplier = multiplier
+      end do
+    end if
+    if (present(weighted) .and. allocated(run%scene%contacts)) then
+      do b = 1, size(run%scene%contacts)
+        if (run%scene%contacts(b)%method == METHOD_MORTAR) run%scene%contacts(b)%weighted = weighted
       end do
     end if
     call read_mesh(run%scene%mesh%file, run%mesh, err, run%scene%mesh%format, run%scene%mesh%scale)
