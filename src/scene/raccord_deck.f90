@@ -217,6 +217,16 @@ contains
     do i = 1, size(scene%bcs)
       if (len(scene%bcs(i)%amplitude) == 0) cycle
       if (any([(scene%amplitudes(j)%name == scene%bcs(i)%amplitude, j = 1, size(scene%amplitudes))])) cycle
+      ! A near miss (the same name in another case) is named: deck names
+      ! are case-sensitive, as the mesh's Gmsh names are.
+      do j = 1, size(scene%amplitudes)
+        if (lower(scene%amplitudes(j)%name) /= lower(scene%bcs(i)%amplitude)) cycle
+        call bad_value(deck, blocks(bc_blk(i)), scene%bcs(i)%set, 'amplitude', &
+          'no &amplitude group has this name; the &amplitude at line ' // str(blocks(amp_blk(j))%line) // &
+          ' is named ''' // scene%amplitudes(j)%name // ''' (names are case-sensitive)', &
+          'write amplitude = ''' // scene%amplitudes(j)%name // '''', err)
+        return
+      end do
       call bad_value(deck, blocks(bc_blk(i)), scene%bcs(i)%set, 'amplitude', &
         'no &amplitude group has this name (defined: ' // amplitude_names(scene) // ')', &
         'add &amplitude name = ''' // scene%bcs(i)%amplitude // ''', time = ..., value = ... / ' // &

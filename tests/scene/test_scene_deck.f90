@@ -87,6 +87,7 @@ program test_scene_deck
       new_test('bad: bc pressure missing', bad_bc_pressure_missing), &
       new_test('bad: bc key not for type', bad_bc_key_not_for_type), &
       new_test('bad: bc amplitude undefined', bad_bc_amplitude_undefined), &
+      new_test('bad: bc amplitude in another case', bad_bc_amplitude_case), &
       new_test('bad: amplitude not increasing', bad_amplitude_not_increasing), &
       new_test('bad: amplitude count mismatch', bad_amplitude_count_mismatch), &
       new_test('bad: amplitude no points', bad_amplitude_no_points), &
@@ -1143,6 +1144,19 @@ contains
       "  amplitude = 'cyc' /", &
       6, [character(len=FRAG_LEN) :: "&boundary 'top'", "'amplitude'", "'cyc'", "cycle"])
   end subroutine bad_bc_amplitude_undefined
+
+  subroutine bad_bc_amplitude_case(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    call expect_error(failure, 'bc_amplitude_case', &
+      "&mesh file = 'm.msh' /" // NL // &
+      "&body name = 'a', young = 1.0, poisson = 0.3, density = 1.0 /" // NL // &
+      "&time t_end = 1.0 /" // NL // &
+      "&amplitude name = 'Ramp', time = 0.0, value = 1.0 /" // NL // &
+      "&boundary set = 'top', type = 'traction', value = 0.0, 1.0," // NL // &
+      "  amplitude = 'ramp' /", &
+      6, [character(len=FRAG_LEN) :: "&boundary 'top'", "'amplitude'", "line 4 is named 'Ramp'", &
+      "case-sensitive", "write amplitude = 'Ramp'"])
+  end subroutine bad_bc_amplitude_case
 
   subroutine bad_amplitude_not_increasing(failure)
     type(failure_t), allocatable, intent(out) :: failure
