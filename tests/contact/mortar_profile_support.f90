@@ -23,6 +23,7 @@ module mortar_profile_support
   end type profile_t
 
   public :: profile_of_run, zero_crossing_half_width, active_half_width, interior_difference, interp_at
+  public :: hertz_rms_error, stick_zigzag
 
 contains
 
@@ -115,4 +116,52 @@ contains
       d = max(d, abs(pb(i) - interp_at(xa, pa, xb(i))))
     end do
   end function interior_difference
+  !> RMS of (lam - p_Hertz)/p0 at the slave nodes with |x| < a, p_Hertz =
+  !> p0 sqrt(1 - (x/a)^2).
+  real(wp) function hertz_rms_error(prof, a, p0) result(r)
+    type(profile_t), intent(in) :: prof
+    real(wp), intent(in) :: a, p0
+    integer :: i, n
+    real(wp) :: s
+    s = 0.0_wp
+    n = 0
+    do i = 1, size(prof%x)
+      if (abs(prof%x(i)) >= a) cycle
+      s = s + (prof%lam(i) - p0*sqrt(1.0_wp - (prof%x(i)/a)**2))**2
+      n = n + 1
+    end do
+    r = sqrt(s/real(max(n, 1), wp))/p0
+  end function hertz_rms_error
+
+  !> Stick traction zigzag (doc/reproduction.md, Fig. 3): the largest
+  !> |fourth difference|/16 of lam_t over windows of five nodes of the
+  !> stick core (pressure >= 0.6 of its peak, |shear| <= 0.95 mu pressure),
+  !> over max |lam_t|; xz its node, ncore the core's size.
+  subroutine stick_zigzag(p, mu, z, xz, ncore)
+    type(profile_t), intent(in) :: p
+    real(wp), intent(in) :: mu
+    real(wp), intent(out) :: z, xz
+    integer, intent(out) :: ncore
+    logical, allocatable :: core(:)
+    real(wp) :: pmax, tmax, d
+    integer :: i, n
+    n = size(p%x)
+    pmax = maxval(p%pres)
+    tmax = maxval(abs(p%tau))
+    allocate(core(n))
+    do i = 1, n
+      core(i) = p%pres(i) >= 0.6_wp*pmax .and. abs(p%shear(i)) <= 0.95_wp*mu*p%pres(i)
+    end do
+    ncore = count(core)
+    z = 0.0_wp
+    xz = 0.0_wp
+    do i = 3, n - 2
+      if (.not. all(core(i-2:i+2))) cycle
+      d = abs(p%tau(i-2) - 4.0_wp*p%tau(i-1) + 6.0_wp*p%tau(i) - 4.0_wp*p%tau(i+1) + p%tau(i+2))/16.0_wp/tmax
+      if (d > z) then
+        z = d
+        xz = p%x(i)
+      end if
+    end do
+  end subroutine stick_zigzag
 end module mortar_profile_support

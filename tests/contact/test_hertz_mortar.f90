@@ -21,7 +21,7 @@ program test_hertz_mortar
   use raccord_scene_runner, only: scene_run_t, run_deck
   use hertz_support, only: hertz_closed_form, check_resultants
   use mortar_profile_support, only: profile_t, profile_of_run, zero_crossing_half_width, active_half_width, &
-    interior_difference
+    hertz_rms_error, interior_difference
   implicit none
 
   real(wp), parameter :: P_LOAD = 8000.0_wp     !< 400 MPa on the 20 mm top (doc/scenes.md section 2)
@@ -48,22 +48,6 @@ program test_hertz_mortar
     new_test('coarse mesh: error larger than on the moderate mesh', test_refinement)])
 
 contains
-
-  !> RMS of (lam - p_Hertz)/p0 at the slave nodes with |x| < a.
-  real(wp) function rms_error(prof) result(r)
-    type(profile_t), intent(in) :: prof
-    integer :: i, n
-    real(wp) :: s
-    s = 0.0_wp
-    n = 0
-    do i = 1, size(prof%x)
-      if (abs(prof%x(i)) >= a) cycle
-      s = s + (prof%lam(i) - p0*sqrt(1.0_wp - (prof%x(i)/a)**2))**2
-      n = n + 1
-    end do
-    r = sqrt(s/real(max(n, 1), wp))/p0
-  end function rms_error
-
   subroutine hertz_case(failure, deck, prof, accuracy)
     type(failure_t), allocatable, intent(inout) :: failure
     character(len=*), intent(in) :: deck
@@ -84,7 +68,7 @@ contains
       100.0_wp*(peak/p0 - 1.0_wp), ' % (pressure ', 100.0_wp*(maxval(prof%pres)/p0 - 1.0_wp), &
       ' %), half-width zero crossing ', 100.0_wp*(hw/a - 1.0_wp), ' % (active set ', &
       100.0_wp*(hw_set/a - 1.0_wp), ' %), |Fy|/P - 1 ', 100.0_wp*(force/P_LOAD - 1.0_wp), ' %, RMS/p0 ', &
-      rms_error(prof), ', energy ', abs(run%state%energy%balance)/run%state%energy%scale
+      hertz_rms_error(prof, a, p0), ', energy ', abs(run%state%energy%balance)/run%state%energy%scale
     call check_resultants(failure, run, P_LOAD, a, RADIUS)
     ! Energy balance relative to the largest energy, at the end of the run.
     ! Not run%worst_balance: at step 0 the energy scale is still 0 while the
@@ -167,8 +151,8 @@ contains
     if (allocated(failure)) return
     call hertz_case(failure, 'reg_mortar_p1_slave_block.nml', pcoarse, .false.)
     if (allocated(failure)) return
-    rc = rms_error(pcoarse)
-    rm = rms_error(pb)
+    rc = hertz_rms_error(pcoarse, a, p0)
+    rm = hertz_rms_error(pb, a, p0)
     write(*, '(a,es10.3,a,es10.3,a,f6.2,a,f5.2)') '        RMS(lam - p)/p0: coarse ', rc, ', moderate ', rm, &
       ', ratio ', rc/rm, ', order ', log(rc/rm)/log(2.5_wp)
     call check(failure, rc > 1.5_wp*rm, 'the coarse mesh is not further from Hertz than the moderate one')

@@ -19,7 +19,8 @@ program test_mortar_dual
   use raccord_scene, only: MULT_P1, MULT_DUAL
   use raccord_scene_runner, only: scene_run_t, run_deck
   use hertz_support, only: hertz_closed_form
-  use mortar_profile_support, only: profile_t, profile_of_run, zero_crossing_half_width, interior_difference
+  use mortar_profile_support, only: profile_t, profile_of_run, zero_crossing_half_width, interior_difference, &
+    hertz_rms_error, stick_zigzag
   implicit none
 
   real(wp), parameter :: P_LOAD = 8000.0_wp     !< Hertz: 400 MPa on the 20 mm top
@@ -42,22 +43,6 @@ program test_mortar_dual
   end if
 
 contains
-
-  !> RMS of (lam - p_Hertz)/p0 at the slave nodes with |x| < a.
-  real(wp) function rms_error(prof) result(r)
-    type(profile_t), intent(in) :: prof
-    integer :: i, n
-    real(wp) :: s
-    s = 0.0_wp
-    n = 0
-    do i = 1, size(prof%x)
-      if (abs(prof%x(i)) >= a) cycle
-      s = s + (prof%lam(i) - p0*sqrt(1.0_wp - (prof%x(i)/a)**2))**2
-      n = n + 1
-    end do
-    r = sqrt(s/real(max(n, 1), wp))/p0
-  end function rms_error
-
   !> One Hertz deck with multiplier space mult: its profile's RMS error and
   !> half-width error (relative), printed; the run must converge with an
   !> exact balance.
@@ -84,7 +69,7 @@ contains
     ! edge), whose signs would move the zero crossing by whole nodes; P1's
     ! tail beyond the edge is above 1e-4 p0.
     where (abs(prof%lam) < 1.0e-9_wp*maxval(prof%lam)) prof%lam = 0.0_wp
-    rms = rms_error(prof)
+    rms = hertz_rms_error(prof, a, p0)
     hw_err = zero_crossing_half_width(prof%x, prof%lam)/a - 1.0_wp
     force = abs(run%pairs(1)%force(2))
     write(*, '(a,a,a,a,f7.2,a,f7.2,a,f7.3,a,es10.3,a,es9.2)') '        ', deck, merge(' dual', ' P1  ', &
@@ -213,7 +198,7 @@ contains
     call check(failure, run%pairs(1)%failed_total == 0, deck // ': unconverged multiplier steps')
     if (allocated(failure)) return
     call profile_of_run(run, p)
-    call zigzag(p, mu, z, xz, ncore)
+    call stick_zigzag(p, mu, z, xz, ncore)
     write(*, '(a,a,f7.4,a,f8.4,a,i0,a,f9.1,a,f9.1)') '        ', deck // ' dual: zigzag ', z, &
       ' of max |lam_t| at x = ', xz, ' (', ncore, ' stick-core nodes), max lam_n ', maxval(p%lam), &
       ', max |lam_t| ', maxval(abs(p%tau))
@@ -252,35 +237,4 @@ contains
     type(failure_t), allocatable, intent(out) :: failure
     call stick_case(failure, 'fig3_mortar_p1_mu020.nml', 0.2_wp)
   end subroutine test_stick_020
-
-  !> test_paper_stick's measure: the largest |fourth difference|/16 of lam_t
-  !> over five consecutive nodes of the stick core (pressure >= 0.6 of its
-  !> peak, |shear| <= 0.95 mu pressure), over max |lam_t|.
-  subroutine zigzag(p, mu, z, xz, ncore)
-    type(profile_t), intent(in) :: p
-    real(wp), intent(in) :: mu
-    real(wp), intent(out) :: z, xz
-    integer, intent(out) :: ncore
-    logical, allocatable :: core(:)
-    real(wp) :: pmax, tmax, d
-    integer :: i, n
-    n = size(p%x)
-    pmax = maxval(p%pres)
-    tmax = maxval(abs(p%tau))
-    allocate(core(n))
-    do i = 1, n
-      core(i) = p%pres(i) >= 0.6_wp*pmax .and. abs(p%shear(i)) <= 0.95_wp*mu*p%pres(i)
-    end do
-    ncore = count(core)
-    z = 0.0_wp
-    xz = 0.0_wp
-    do i = 3, n - 2
-      if (.not. all(core(i-2:i+2))) cycle
-      d = abs(p%tau(i-2) - 4.0_wp*p%tau(i-1) + 6.0_wp*p%tau(i) - 4.0_wp*p%tau(i+1) + p%tau(i+2))/16.0_wp/tmax
-      if (d > z) then
-        z = d
-        xz = p%x(i)
-      end if
-    end do
-  end subroutine zigzag
 end program test_mortar_dual

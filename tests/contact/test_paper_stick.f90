@@ -20,7 +20,7 @@ program test_paper_stick
   use raccord_check, only: failure_t, new_test, run_tests, check
   use raccord_error, only: error_t
   use raccord_scene_runner, only: scene_run_t, run_deck
-  use mortar_profile_support, only: profile_t, profile_of_run
+  use mortar_profile_support, only: profile_t, profile_of_run, stick_zigzag
   implicit none
 
   character(len=*), parameter :: DECK = 'input/paper/fig3_mortar_p1_mu050.nml'
@@ -53,7 +53,7 @@ contains
     call check(failure, run%pairs(1)%failed_total == 0, DECK // ': unconverged multiplier steps')
     if (allocated(failure)) return
     call profile_of_run(run, p)
-    call zigzag(p, z, xz, ncore)
+    call stick_zigzag(p, MU, z, xz, ncore)
     write(*, '(a, f7.4, a, f8.4, a, i0, a)') '  zigzag ', z, ' of max |lam_t| at x = ', xz, ' (', ncore, ' stick-core nodes)'
     call check(failure, ncore >= 30, 'stick core too small to judge')
     call check(failure, z < ZIGZAG_MAX, 'stick traction zigzags by more than 2 % of its peak')
@@ -70,37 +70,8 @@ contains
     call check(failure, .not. err%failed(), DECK // ' (disc undamped) failed')
     if (allocated(failure)) return
     call profile_of_run(run, p)
-    call zigzag(p, z, xz, ncore)
+    call stick_zigzag(p, MU, z, xz, ncore)
     write(*, '(a, f7.4, a, f8.4, a, i0, a)') '  zigzag ', z, ' of max |lam_t| at x = ', xz, ' (', ncore, ' stick-core nodes)'
     call check(failure, z > ZIGZAG_MAX, 'the undamped disc no longer zigzags: the damping of the deck may be unneeded')
   end subroutine test_undamped
-
-  !> Largest |fourth difference|/16 of lam_t over windows of five nodes of the
-  !> stick core, over max |lam_t|; xz its node, ncore the core's size.
-  subroutine zigzag(p, z, xz, ncore)
-    type(profile_t), intent(in) :: p
-    real(wp), intent(out) :: z, xz
-    integer, intent(out) :: ncore
-    logical, allocatable :: core(:)
-    real(wp) :: pmax, tmax, d
-    integer :: i, n
-    n = size(p%x)
-    pmax = maxval(p%pres)
-    tmax = maxval(abs(p%tau))
-    allocate(core(n))
-    do i = 1, n
-      core(i) = p%pres(i) >= 0.6_wp*pmax .and. abs(p%shear(i)) <= 0.95_wp*MU*p%pres(i)
-    end do
-    ncore = count(core)
-    z = 0.0_wp
-    xz = 0.0_wp
-    do i = 3, n - 2
-      if (.not. all(core(i-2:i+2))) cycle
-      d = abs(p%tau(i-2) - 4.0_wp*p%tau(i-1) + 6.0_wp*p%tau(i) - 4.0_wp*p%tau(i+1) + p%tau(i+2))/16.0_wp/tmax
-      if (d > z) then
-        z = d
-        xz = p%x(i)
-      end if
-    end do
-  end subroutine zigzag
 end program test_paper_stick
