@@ -191,9 +191,9 @@ contains
 
   !> (CD-1), (CD-2) at the nodes i0..i1 as if free, with the semi-implicit
   !> damping; part = this segment's sums of m v(n)^2, u(n)' f_int,
-  !> m v(n+1/2)^2 and u(n+1)' f_int. A scene without loads or body force
-  !> has f_ext = 0: the loop does not read it (a stream of 16 bytes a node
-  !> less), and the same arithmetic gives the same bits (0 - x = -x).
+  !> m v(n+1/2)^2 and u(n+1)' f_int. The segment's arrays go to
+  !> `free_motion` as explicit-shape arrays (contiguous, unit stride known
+  !> to the compiler), so that its loops vectorise.
   subroutine predict_nodes(model, state, h, dt, first, i0, i1, part)
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
@@ -201,42 +201,111 @@ contains
     logical, intent(in) :: first
     integer, intent(in) :: i0, i1
     real(wp), intent(out) :: part(4)
-    real(wp) :: c, ke, ie, kh, cross, vold(2), vnew(2), vm(2), df(2)
-    integer :: i
-    logical :: forced
-    forced = model%has_loads .or. model%has_body_force
+    if (i1 < i0) then
+      part = 0.0_wp
+      return
+    end if
+    call free_motion(i1 - i0 + 1, h, dt, first, model%has_damping, model%has_loads .or. model%has_body_force, &
+      model%alpha(i0:i1), model%minv(i0:i1), model%mass(i0:i1), state%u(:, i0:i1), state%f_int(:, i0:i1), &
+      state%f_ext(:, i0:i1), state%v(:, i0:i1), state%v_mid(:, i0:i1), state%u_next(:, i0:i1), part)
+  end subroutine predict_nodes
+
+  !> The predictor's kernel on n nodes: (CD-1) with the semi-implicit
+  !> damping,
+  !>   v(n+1/2) = [(1 - c) v(n-1/2) + h M^-1 (f_ext - f_int)] / (1 + c),  c = alpha h/2,
+  !> (CD-2) u(n+1) = u(n) + dt v(n+1/2), v(n) = (v(n-1/2) + v(n+1/2))/2 (on
+  !> the first half step v(0)), and the four energy sums of predict_nodes.
+  !> The nodes go by blocks of nl: the new velocities of a block in the
+  !> loop of the scene's variant (damped or not, with applied forces or
+  !> not: the unforced loop reads no f_ext, and 0 - x = -x), then one loop
+  !> that stores the block and adds its terms to the sums, node l of the
+  !> block into lane l. The lanes are added in order at the end. Every
+  !> inner loop is branch-free and vectorises; the motion is the same
+  !> arithmetic as a node-by-node loop, and the sums depend on the
+  !> segments only, not on the thread count.
+  pure subroutine free_motion(n, h, dt, first, damped, forced, alpha, minv, mass, u, f_int, f_ext, v, v_mid, &
+      u_next, part)
+    integer, intent(in) :: n
+    real(wp), intent(in) :: h, dt
+    logical, intent(in) :: first, damped, forced
+    real(wp), intent(in) :: alpha(n), minv(n), mass(n), u(2, n), f_int(2, n), f_ext(2, n)
+    real(wp), intent(inout) :: v(2, n)
+    real(wp), intent(out) :: v_mid(2, n), u_next(2, n), part(4)
+    integer, parameter :: nl = 8
+    real(wp) :: ke(nl), ie(nl), kh(nl), cross(nl), vn(2, nl), vm(2, nl), c, un1, un2
+    integer :: b, l, i, k, m
+
     ke = 0.0_wp
     ie = 0.0_wp
     kh = 0.0_wp
     cross = 0.0_wp
-    do i = i0, i1
-      vold = state%v(:, i)
-      if (forced) then
-        df = state%f_ext(:, i) - state%f_int(:, i)
+    do b = 0, n - 1, nl
+      m = min(nl, n - b)
+      ! (CD-1): v(n+1/2) of the block
+      if (damped .and. forced) then
+        do l = 1, m
+          i = b + l
+          c = 0.5_wp*alpha(i)*h
+          vn(1, l) = ((1.0_wp - c)*v(1, i) + h*minv(i)*(f_ext(1, i) - f_int(1, i)))/(1.0_wp + c)
+          vn(2, l) = ((1.0_wp - c)*v(2, i) + h*minv(i)*(f_ext(2, i) - f_int(2, i)))/(1.0_wp + c)
+        end do
+      else if (damped) then
+        do l = 1, m
+          i = b + l
+          c = 0.5_wp*alpha(i)*h
+          vn(1, l) = ((1.0_wp - c)*v(1, i) + h*minv(i)*(-f_int(1, i)))/(1.0_wp + c)
+          vn(2, l) = ((1.0_wp - c)*v(2, i) + h*minv(i)*(-f_int(2, i)))/(1.0_wp + c)
+        end do
+      else if (forced) then
+        do l = 1, m
+          i = b + l
+          vn(1, l) = v(1, i) + h*minv(i)*(f_ext(1, i) - f_int(1, i))
+          vn(2, l) = v(2, i) + h*minv(i)*(f_ext(2, i) - f_int(2, i))
+        end do
       else
-        df = -state%f_int(:, i)
+        do l = 1, m
+          i = b + l
+          vn(1, l) = v(1, i) + h*minv(i)*(-f_int(1, i))
+          vn(2, l) = v(2, i) + h*minv(i)*(-f_int(2, i))
+        end do
       end if
-      if (model%has_damping) then
-        c = 0.5_wp*model%alpha(i)*h
-        vnew = ((1.0_wp - c)*vold + h*model%minv(i)*df)/(1.0_wp + c)
-      else
-        vnew = vold + h*model%minv(i)*df
-      end if
+      ! v(n): the mean of the half-step velocities, v(0) on the first step
       if (first) then
-        vm = vold
+        do l = 1, m
+          vm(1, l) = v(1, b + l)
+          vm(2, l) = v(2, b + l)
+        end do
       else
-        vm = 0.5_wp*(vold + vnew)
+        do l = 1, m
+          vm(1, l) = 0.5_wp*(v(1, b + l) + vn(1, l))
+          vm(2, l) = 0.5_wp*(v(2, b + l) + vn(2, l))
+        end do
       end if
-      state%v(:, i) = vnew
-      state%v_mid(:, i) = vm
-      state%u_next(:, i) = state%u(:, i) + dt*vnew
-      ke = ke + model%mass(i)*(vm(1)**2 + vm(2)**2)
-      ie = ie + state%u(1, i)*state%f_int(1, i) + state%u(2, i)*state%f_int(2, i)
-      kh = kh + model%mass(i)*(vnew(1)**2 + vnew(2)**2)
-      cross = cross + state%u_next(1, i)*state%f_int(1, i) + state%u_next(2, i)*state%f_int(2, i)
+      ! (CD-2), the stores and the sums' terms, node l in lane l
+      do l = 1, m
+        i = b + l
+        un1 = u(1, i) + dt*vn(1, l)
+        un2 = u(2, i) + dt*vn(2, l)
+        v(1, i) = vn(1, l)
+        v(2, i) = vn(2, l)
+        v_mid(1, i) = vm(1, l)
+        v_mid(2, i) = vm(2, l)
+        u_next(1, i) = un1
+        u_next(2, i) = un2
+        ke(l) = ke(l) + mass(i)*(vm(1, l)**2 + vm(2, l)**2)
+        ie(l) = ie(l) + (u(1, i)*f_int(1, i) + u(2, i)*f_int(2, i))
+        kh(l) = kh(l) + mass(i)*(vn(1, l)**2 + vn(2, l)**2)
+        cross(l) = cross(l) + (un1*f_int(1, i) + un2*f_int(2, i))
+      end do
     end do
-    part = [ke, ie, kh, cross]
-  end subroutine predict_nodes
+    part = 0.0_wp
+    do k = 1, nl
+      part(1) = part(1) + ke(k)
+      part(2) = part(2) + ie(k)
+      part(3) = part(3) + kh(k)
+      part(4) = part(4) + cross(k)
+    end do
+  end subroutine free_motion
 
   !> Constrained dofs: velocity that lands exactly on the prescribed value
   !> at t(n+1); the reaction is the force that turns the free velocity into
@@ -314,23 +383,42 @@ contains
 
   !> sum alpha m |v|^2 over the nodes i0..i1, v the mean of the two
   !> half-step velocities (on the first half step, of v(0) and v(1/2)).
-  pure real(wp) function damping_power(model, state, first, i0, i1) result(p)
+  real(wp) function damping_power(model, state, first, i0, i1) result(p)
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
     logical, intent(in) :: first
     integer, intent(in) :: i0, i1
     integer :: i
     p = 0.0_wp
+    if (i1 < i0) return
     if (first) then
       do i = i0, i1
         p = p + model%alpha(i)*model%mass(i)*(0.25_wp*sum((model%v0(:, i) + state%v(:, i))**2))
       end do
     else
-      do i = i0, i1
-        p = p + model%alpha(i)*model%mass(i)*(state%v_mid(1, i)**2 + state%v_mid(2, i)**2)
-      end do
+      p = damping_sum(i1 - i0 + 1, model%alpha(i0:i1), model%mass(i0:i1), state%v_mid(:, i0:i1))
     end if
   end function damping_power
+
+  !> sum alpha m |v|^2 over n nodes, in nl lanes as free_motion's sums
+  !> (node l of a block of nl into lane l, the lanes added in order).
+  pure real(wp) function damping_sum(n, alpha, mass, v) result(p)
+    integer, intent(in) :: n
+    real(wp), intent(in) :: alpha(n), mass(n), v(2, n)
+    integer, parameter :: nl = 8
+    real(wp) :: lane(nl)
+    integer :: b, l, k
+    lane = 0.0_wp
+    do b = 0, n - 1, nl
+      do l = 1, min(nl, n - b)
+        lane(l) = lane(l) + alpha(b + l)*mass(b + l)*(v(1, b + l)**2 + v(2, b + l)**2)
+      end do
+    end do
+    p = 0.0_wp
+    do k = 1, nl
+      p = p + lane(k)
+    end do
+  end function damping_sum
 
   !> Sum of the partial sums in index order (fixed, whatever the threads).
   pure real(wp) function sum_in_order(part) result(total)
