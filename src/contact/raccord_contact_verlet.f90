@@ -196,19 +196,12 @@ contains
     integer, intent(inout) :: cand(:)
     integer, intent(out) :: ncand
     integer :: q, l
-    ! Without a branch per entry (whether a listed segment is a candidate
-    ! changes from entry to entry and was mispredicted): each entry is
-    ! written at ncand + 1 and kept by counting it. ncand + 1 <= q - ptr(k)
-    ! + 1 <= the list's length <= size(cand), so the write stays in cand.
-    ! The boxes meet when all four differences are >= 0 (a - b >= 0 exactly
-    ! when a >= b in IEEE arithmetic): the test of verlet_overlaps as one
-    ! minimum, not four short-circuited comparisons.
     ncand = 0
     do q = v%ptr(k), v%ptr(k + 1) - 1
       l = v%item(q)
-      cand(ncand + 1) = l
-      ncand = ncand + merge(1, 0, min(hi(1) - v%box(1, l), v%box(3, l) - lo(1), hi(2) - v%box(2, l), &
-        v%box(4, l) - lo(2)) >= 0.0_wp)
+      if (v%box(1, l) > hi(1) .or. v%box(3, l) < lo(1) .or. v%box(2, l) > hi(2) .or. v%box(4, l) < lo(2)) cycle
+      ncand = ncand + 1
+      cand(ncand) = l
     end do
   end subroutine verlet_candidates
 
