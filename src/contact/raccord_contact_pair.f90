@@ -407,9 +407,15 @@ contains
       integer :: q, n
       do q = 1, size(nodes)
         n = nodes(q)
-        pair%xcur(:, n) = model%x(:, n) + state%u(:, n)
-        pair%xpred(:, n) = model%x(:, n) + state%u_next(:, n)
-        pair%dcur(:, n) = state%u_next(:, n) - state%u(:, n)
+        ! Component by component: the extent of model%x's first dimension
+        ! is not known here, and the sections were a loop of unknown length
+        ! per node, unrolled with a jump table.
+        pair%xcur(1, n) = model%x(1, n) + state%u(1, n)
+        pair%xcur(2, n) = model%x(2, n) + state%u(2, n)
+        pair%xpred(1, n) = model%x(1, n) + state%u_next(1, n)
+        pair%xpred(2, n) = model%x(2, n) + state%u_next(2, n)
+        pair%dcur(1, n) = state%u_next(1, n) - state%u(1, n)
+        pair%dcur(2, n) = state%u_next(2, n) - state%u(2, n)
       end do
     end subroutine load_nodes
   end subroutine enforce_pair

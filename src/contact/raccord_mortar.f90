@@ -107,6 +107,9 @@ module raccord_mortar
     integer :: nstep = 0
     integer, allocatable :: sstamp(:)         !< (nseg) last step snrm was taken at (2-node segments)
     real(wp), allocatable :: snrm(:,:)        !< (2, nseg) outward unit normal of each straight segment
+    real(wp), allocatable :: slen(:)          !< (nseg) |dx_s/dxi| of each straight segment (half its length)
+    real(wp), allocatable :: mnu(:,:)         !< (2, master nseg) inward unit normal of each listed straight
+                                              !< master segment, taken once per step (build_mortar)
     integer, allocatable :: slist(:)          !< (nseg) scratch: the segments whose snrm is taken
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
@@ -159,7 +162,8 @@ contains
     allocate(w%mbeg(ns), source=1)
     allocate(w%mend(ns), w%stamp(nn), w%sstamp(ns), source=0)
     allocate(w%nlist(nn))
-    allocate(w%snrm(2, ns), source=0.0_wp)
+    allocate(w%snrm(2, ns), w%slen(ns), source=0.0_wp)
+    allocate(w%mnu(2, master%nseg), source=0.0_wp)
     allocate(w%slist(ns))
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%cand(max(16, master%nseg)))
@@ -208,7 +212,7 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
     integer :: k, a, c, nen, ncand, l, t, tn
-    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), xi1, xi2
+    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), xi1, xi2, tm(2), tsgn
 
     w%multiplier = multiplier
     nen = slave%nen_seg
@@ -234,6 +238,16 @@ contains
       w%f_seg(w%mcorner(1, l)) = 0
       w%f_seg(w%mcorner(2, l)) = 0
     end do
+    ! The inward unit normal of each listed straight master segment (its
+    ! tangent x_m' = -x_1/2 + x_2/2 turned anticlockwise), once per step
+    ! instead of once per overlap (integrate_overlap_line).
+    if (master%nen_seg == 2) then
+      do t = 1, v%nmnear
+        l = v%mnear(t)
+        tm = x(:, master%seg(1, l))*(-0.5_wp) + x(:, master%seg(2, l))*0.5_wp
+        w%mnu(:, l) = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
+      end do
+    end if
     w%nment = 0
     slave_segments: do tn = 1, v%nnear
       k = v%near(tn)
@@ -255,6 +269,12 @@ contains
       ! the slave segment's box now (the test of the full search).
       call verlet_candidates(v, k, lo, hi, w%cand, ncand)
       w%mbeg(k) = w%nment + 1
+      ! The side of the segment's normal lines a corner past both its
+      ! ends lies on (root_along_field's test, once per segment: corner_xi
+      ! decides those corners without the call).
+      if (ncand > 0) then
+        tsgn = sign(1.0_wp, (xs(1, 2) - xs(1, 1))*(nn(2, 1) + nn(2, 2)) - (xs(2, 2) - xs(2, 1))*(nn(1, 1) + nn(1, 2)))
+      end if
       do t = 1, ncand
         l = w%cand(t)
         ! Segmentation (method brief section 5): the master ends seen from
@@ -281,14 +301,26 @@ contains
         w%trib(w%pos(a, k)) = 0.0_wp
       end do
     end do
-    do tn = 1, v%nnear
-      k = v%near(tn)
-      do a = 1, nen
-        c = w%pos(a, k)
-        w%len(c) = w%len(c) + sum(w%g1loc(1:nen, a, k))
-        w%trib(c) = w%trib(c) + sum(w%g1loc(a, 1:nen, k))
+    if (nen == 2) then
+      ! The same sums with the length known (two terms, in order).
+      do tn = 1, v%nnear
+        k = v%near(tn)
+        do a = 1, 2
+          c = w%pos(a, k)
+          w%len(c) = w%len(c) + (w%g1loc(1, a, k) + w%g1loc(2, a, k))
+          w%trib(c) = w%trib(c) + (w%g1loc(a, 1, k) + w%g1loc(a, 2, k))
+        end do
       end do
-    end do
+    else
+      do tn = 1, v%nnear
+        k = v%near(tn)
+        do a = 1, nen
+          c = w%pos(a, k)
+          w%len(c) = w%len(c) + sum(w%g1loc(1:nen, a, k))
+          w%trib(c) = w%trib(c) + sum(w%g1loc(a, 1:nen, k))
+        end do
+      end do
+    end if
     call assemble_rows(slave, xpred, du, v, w, cs)
   contains
     !> Slave parameter of master corner c on slave segment k (xs, nn): the
@@ -312,7 +344,13 @@ contains
       fhi = (pc(1) - xs(1, 2))*nn(2, 2) - (pc(2) - xs(2, 2))*nn(1, 2)
       w%f_seg(c) = k
       w%f_end(c) = fhi
-      xi = root_along_field(nen, xs, nn, pc, flo, fhi)
+      if (flo /= 0.0_wp .and. fhi /= 0.0_wp .and. sign(1.0_wp, flo) == sign(1.0_wp, fhi)) then
+        ! No root inside: past the end root_along_field picks (the same
+        ! test, written out; most corners of the candidates are such).
+        xi = merge(1.0_wp, -1.0_wp, sign(1.0_wp, flo) == tsgn)
+      else
+        xi = root_along_field(nen, xs, nn, pc, flo, fhi)
+      end if
       w%xi_seg(c) = k
       w%xi_val(c) = xi
     end function corner_xi
@@ -336,7 +374,7 @@ contains
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr, pn, sl
     logical :: fold
     real(wp) :: v, tol, g1col(-G1_MAX_BAND:G1_MAX_BAND)
 
@@ -407,7 +445,21 @@ contains
           ! (constraint numbering: g1(d, j) = G1(j + d, j)).
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
-            if (v /= 0.0_wp) call put(slave%seg(ai, k), -v)
+            if (v /= 0.0_wp) then
+              ! put(slave%seg(ai, k), -v), written out here and below (the
+              ! internal procedure was not inlined: a call per entry)
+              pn = slave%seg(ai, k)
+              sl = w%slot(pn)
+              if (sl > 0) then
+                w%rw(sl) = w%rw(sl) - v
+              else
+                if (nr == size(w%rnode)) call grow_row(w)
+                nr = nr + 1
+                w%rnode(nr) = pn
+                w%rw(nr) = -v
+                w%slot(pn) = nr
+              end if
+            end if
             i = w%cidx(w%pos(ai, k))
             ! 3-node edges: the conditions' G1 is that of the corners' linear
             ! hats N_corner + N_mid/2 (each mid node's share split between
@@ -421,7 +473,18 @@ contains
           end do
           ! Master entries +G21(a, j).
           do e = w%mbeg(k), w%mend(k)
-            if (w%ment_loc(e) == b) call put(w%ment_node(e), w%ment_w(e))
+            if (w%ment_loc(e) /= b) cycle
+            pn = w%ment_node(e)
+            sl = w%slot(pn)
+            if (sl > 0) then
+              w%rw(sl) = w%rw(sl) + w%ment_w(e)
+            else
+              if (nr == size(w%rnode)) call grow_row(w)
+              nr = nr + 1
+              w%rnode(nr) = pn
+              w%rw(nr) = w%ment_w(e)
+              w%slot(pn) = nr
+            end if
           end do
         end do
         if (w%weighted) then
@@ -460,23 +523,6 @@ contains
     end do
     cs%g1_band = band
   contains
-    !> Add weight ww of global node pp to the row being assembled.
-    subroutine put(pp, ww)
-      integer, intent(in) :: pp
-      real(wp), intent(in) :: ww
-      integer :: sl
-      sl = w%slot(pp)
-      if (sl > 0) then
-        w%rw(sl) = w%rw(sl) + ww
-        return
-      end if
-      if (nr == size(w%rnode)) call grow_row(w)
-      nr = nr + 1
-      w%rnode(nr) = pp
-      w%rw(nr) = ww
-      w%slot(pp) = nr
-    end subroutine put
-
     !> Chain position of the q-th node in constraint order: along the
     !> chain from cfirst, or folded (the chain's q-th node from the start
     !> for odd q, from the end for even q).
@@ -697,26 +743,28 @@ contains
     real(wp), intent(in) :: s0, s1, reach
     type(mortar_work_t), intent(inout) :: w
     integer :: a, b, g, ib, np
-    real(wp) :: xm1(2), xm2(2), ts(2), tm(2), xi, wgt, ps(2), n(2), eta, pm(2), dg, ns(2), nm(2), psi(2), &
-      mloc(2, 2), bounds(3), lo, hi, dgw, nu(2)
+    real(wp) :: xm1(2), xm2(2), tm(2), xi, wgt, ps(2), n(2), eta, pm(2), dg, ns(2), nm(2), psi(2), &
+      mloc(2, 2), bounds(3), lo, hi, dgw, nu(2), gap, g1(2, 2), nml(2, 2), glo, ghi
     logical :: p0, dual
 
     xm1 = x(:, master%seg(1, l))
     xm2 = x(:, master%seg(2, l))
-    ! Tangents of straight segments: x_s'(xi) = -x_1/2 + x_2/2 (shape_line).
-    ts = xs(:, 1)*(-0.5_wp) + xs(:, 2)*0.5_wp
+    ! Tangent of the straight master segment: x_m'(eta) = -x_1/2 + x_2/2 (shape_line).
     tm = xm1*(-0.5_wp) + xm2*0.5_wp
     ! Only a master that faces the slave, within reach, counts (tested at
-    ! the middle of the overlap, as integrate_overlap).
+    ! the middle of the overlap, as integrate_overlap). The normal field
+    ! n there is not normalised: the facing test is a sign, and the reach
+    ! test |(p_m - p_s) . n| > reach |n| is taken squared (no square root
+    ! or division; the same test up to round-off at its bound).
     xi = 0.5_wp*(s0 + s1)
     ns = [0.5_wp*(1.0_wp - xi), 0.5_wp*(1.0_wp + xi)]
-    ps = xs(:, 1)*ns(1) + xs(:, 2)*ns(2)
     n = nn(:, 1)*ns(1) + nn(:, 2)*ns(2)
-    n = n/max(sqrt(n(1)**2 + n(2)**2), tiny(1.0_wp))
+    if (tm(2)*n(1) - tm(1)*n(2) >= 0.0_wp) return
+    ps = xs(:, 1)*ns(1) + xs(:, 2)*ns(2)
     eta = ray_line(xm1, xm2, ps, n)
     pm = xm1*(0.5_wp*(1.0_wp - eta)) + xm2*(0.5_wp*(1.0_wp + eta))
-    if (tm(2)*n(1) - tm(1)*n(2) >= 0.0_wp) return
-    if (abs((pm(1) - ps(1))*n(1) + (pm(2) - ps(2))*n(2)) > reach) return
+    gap = (pm(1) - ps(1))*n(1) + (pm(2) - ps(2))*n(2)
+    if (gap**2 > reach**2*(n(1)**2 + n(2)**2)) return
     ! Slave nodes whose own point faces this master segment.
     do a = 1, 2
       if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
@@ -731,10 +779,15 @@ contains
       bounds(2) = 0.0_wp
     end if
     bounds(np + 1) = s1
-    ! dGamma = |dx_s/dxi| dxi, |dx_s/dxi| constant on a straight segment.
-    dg = sqrt(ts(1)**2 + ts(2)**2)
-    ! The master's inward unit normal (its tangent turned anticlockwise).
-    nu = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
+    ! dGamma = |dx_s/dxi| dxi, |dx_s/dxi| constant on a straight segment
+    ! (taken with the segment's normal, slave_normals); the master's
+    ! inward unit normal, taken once per step (build_mortar).
+    dg = w%slen(k)
+    nu = w%mnu(:, l)
+    ! The segment's sums in registers over the Gauss points (loaded and
+    ! stored back: the same additions in the same order).
+    g1 = w%g1loc(1:2, 1:2, k)
+    nml = w%nmloc(:, 1:2, k)
     mloc = 0.0_wp
     pieces: do ib = 1, np
       lo = bounds(ib)
@@ -749,7 +802,18 @@ contains
         dgw = dg*wgt
         ! axisymmetric: dGamma = 2 pi r |dx_s/dxi| dxi (method brief 9.4)
         if (axisymmetric) dgw = dgw*(2.0_wp*pi*ps(1))
-        eta = ray_line(xm1, xm2, ps, n)
+        ! ray_line written out (the call was not inlined)
+        glo = (xm1(1) - ps(1))*n(2) - (xm1(2) - ps(2))*n(1)
+        ghi = (xm2(1) - ps(1))*n(2) - (xm2(2) - ps(2))*n(1)
+        if (glo == 0.0_wp) then
+          eta = -1.0_wp
+        else if (ghi == 0.0_wp) then
+          eta = 1.0_wp
+        else if (sign(1.0_wp, glo) == sign(1.0_wp, ghi)) then
+          eta = merge(-1.0_wp, 1.0_wp, abs(glo) < abs(ghi))
+        else
+          eta = -1.0_wp - 2.0_wp*glo/(ghi - glo)
+        end if
         nm = [0.5_wp*(1.0_wp - eta), 0.5_wp*(1.0_wp + eta)]
         ! psi of multiplier_basis: P1 hats (= the shape functions), P0
         ! the dual cells [-1, 0), [0, 1].
@@ -762,15 +826,17 @@ contains
         else
           psi = ns
         end if
+        ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
+        ! (A psi_j of 0 adds zeros: no test.)
         do b = 1, 2
-          if (psi(b) == 0.0_wp) cycle
-          ! G1(i, j) += N_i^s(xi) psi_j(xi) dGamma; G21(a, j) += N_a^m(eta) psi_j(xi) dGamma.
-          w%g1loc(1:2, b, k) = w%g1loc(1:2, b, k) + ns*psi(b)*dgw
+          g1(:, b) = g1(:, b) + ns*psi(b)*dgw
           mloc(:, b) = mloc(:, b) + nm*psi(b)*dgw
-          w%nmloc(:, b, k) = w%nmloc(:, b, k) + nu*psi(b)*dgw
+          nml(:, b) = nml(:, b) + nu*psi(b)*dgw
         end do
       end do
     end do pieces
+    w%g1loc(1:2, 1:2, k) = g1
+    w%nmloc(:, 1:2, k) = nml
     do b = 1, 2
       do a = 1, 2
         if (mloc(a, b) == 0.0_wp) cycle
@@ -956,7 +1022,7 @@ contains
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     integer :: k, a, c, tn, t, kk, nl, nsl
-    real(wp) :: xs(2, 3)
+    real(wp) :: xs(2, 3), tt(2)
     w%nstep = w%nstep + 1
     nl = 0
     if (slave%nen_seg == 2) then
@@ -977,9 +1043,13 @@ contains
           end do
         end do
       end do
+      ! The tangent's length |x_s'| = h/2 is kept for the overlaps'
+      ! dGamma (integrate_overlap_line).
       do t = 1, nsl
         kk = w%slist(t)
-        w%snrm(:, kk) = line_normal(x(:, slave%seg(1, kk)), x(:, slave%seg(2, kk)))
+        tt = x(:, slave%seg(1, kk))*(-0.5_wp) + x(:, slave%seg(2, kk))*0.5_wp
+        w%slen(kk) = sqrt(tt(1)**2 + tt(2)**2)
+        w%snrm(:, kk) = [tt(2), -tt(1)]/max(w%slen(kk), tiny(1.0_wp))
       end do
     end if
     do tn = 1, vl%nnear
@@ -1019,15 +1089,6 @@ contains
       w%nrm(:, c) = w%nrm(:, c)/max(sqrt(w%nrm(1, c)**2 + w%nrm(2, c)**2), tiny(1.0_wp))
     end do
   end subroutine slave_normals
-
-  !> outward_normal of a straight segment x1-x2: its tangent x2/2 - x1/2
-  !> turned clockwise, unit.
-  pure function line_normal(x1, x2) result(n)
-    real(wp), intent(in) :: x1(2), x2(2)
-    real(wp) :: n(2), t(2)
-    t = x1*(-0.5_wp) + x2*0.5_wp
-    n = [t(2), -t(1)]/max(sqrt(t(1)**2 + t(2)**2), tiny(1.0_wp))
-  end function line_normal
 
   !> Zero slave segment k's integrals (g1loc, nmloc) with stores written
   !> out: the array sections were a call to memset each, per near segment
