@@ -424,98 +424,123 @@ contains
   !> block B in w%ab (general band storage), the border columns C (bc),
   !> rows D' (bd: bd(c, b) = row b, column c) and block E (be), the
   !> right-hand sides in rhs and bg. Banded rows are scaled to unit largest
-  !> entry (over B and C), as in the saddle form.
+  !> entry (over B and C), as in the saddle form. The sums run in
+  !> assemble_friction on explicit-shape arrays (issue #16, fifth pass).
   subroutine friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, info)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt2, mu
     integer, intent(in) :: n, nb, kl, ku
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: info
-    integer :: m, i, k, ldab, kv, r, c, b, rn, rt, cn, ct
-    real(wp) :: ann, ant, atn, att, sc
+    integer :: m
     m = cs%m
+    call assemble_friction(m, w%kb, ubound(w%knn, 1), size(w%knn, 2), dt2, mu, n, nb, kl, ku, &
+      size(w%ab, 1), size(w%ab, 2), size(w%bc, 1), &
+      cs%gap_w(1:m), cs%slip_w(1:m), w%knn, w%knt, w%ktn, w%ktt, w%sgn(1:m), w%bmark(1:m), &
+      w%ulam(1:m), w%uq(1:m), w%ncnt(1:m), w%ncol(:, 1:m), w%nval(:, 1:m), &
+      w%tcnt(1:m), w%tcol(:, 1:m), w%tval(:, 1:m), w%fcol(1:n), w%lcol(1:n), &
+      w%ab, w%rhs(1:n), w%bc, w%bd, w%be, w%bg, info)
+  end subroutine friction_matrix
+
+  !> friction_matrix on explicit-shape arrays: the same sums in the same order.
+  subroutine assemble_friction(m, kb, kbs, ncap, dt2, mu, n, nb, kl, ku, lda, nabcap, ldb, &
+      gap_w, slip_w, knn, knt, ktn, ktt, sgn, bmark, ulam, uq, ncnt, ncol, nval, &
+      tcnt, tcol, tval, fcol, lcol, ab, rhs, bc, bd, be, bg, info)
+    integer, intent(in) :: m, kb, kbs, ncap, n, nb, kl, ku, lda, nabcap, ldb
+    real(wp), intent(in) :: dt2, mu
+    real(wp), intent(in) :: gap_w(m), slip_w(m), sgn(m)
+    real(wp), intent(in), dimension(-kbs:kbs, ncap) :: knn, knt, ktn, ktt
+    integer, intent(in) :: bmark(m), ulam(m), uq(m), ncnt(m), ncol(ZMAX, m), tcnt(m), tcol(ZMAX, m)
+    real(wp), intent(in) :: nval(ZMAX, m), tval(ZMAX, m)
+    integer, intent(in) :: fcol(n), lcol(n)
+    real(wp), intent(inout) :: ab(lda, nabcap), rhs(n)
+    real(wp), intent(inout) :: bc(ldb, BORDER_MAX), bd(ldb, BORDER_MAX), be(BORDER_MAX, BORDER_MAX + 1)
+    real(wp), intent(inout) :: bg(BORDER_MAX)
+    integer, intent(out) :: info
+    integer :: i, k, ldab, kv, r, c, b, rn, rt, cn, ct
+    real(wp) :: ann, ant, atn, att, sc
     info = 0
     ldab = 2*kl + ku + 1
     kv = kl + ku + 1
-    w%ab(1:ldab, 1:n) = 0.0_wp
-    w%rhs(1:n) = 0.0_wp
+    ab(1:ldab, 1:n) = 0.0_wp
+    rhs(1:n) = 0.0_wp
     if (nb > 0) then
-      w%bc(1:n, 1:nb) = 0.0_wp
-      w%bd(1:n, 1:nb) = 0.0_wp
-      w%be(1:nb, 1:nb) = 0.0_wp
-      w%bg(1:nb) = 0.0_wp
+      bc(1:n, 1:nb) = 0.0_wp
+      bd(1:n, 1:nb) = 0.0_wp
+      be(1:nb, 1:nb) = 0.0_wp
+      bg(1:nb) = 0.0_wp
     end if
     do i = 1, m
-      if (w%ncnt(i) == 0 .and. w%tcnt(i) == 0) cycle
-      call add_rhs(w%ncnt(i), w%ncol(:, i), w%nval(:, i), -cs%gap_w(i))
-      call add_rhs(w%tcnt(i), w%tcol(:, i), w%tval(:, i), -cs%slip_w(i))
-      do k = max(1, i - w%kb), min(m, i + w%kb)
-        if (w%ncnt(k) == 0 .and. w%tcnt(k) == 0) cycle
+      if (ncnt(i) == 0 .and. tcnt(i) == 0) cycle
+      call add_rhs(ncnt(i), ncol(:, i), nval(:, i), -gap_w(i))
+      call add_rhs(tcnt(i), tcol(:, i), tval(:, i), -slip_w(i))
+      do k = max(1, i - kb), min(m, i + kb)
+        if (ncnt(k) == 0 .and. tcnt(k) == 0) cycle
         ! (Mnn + mu Mnt S)(i, k), Mnt, (Mtn + mu Mtt S), Mtt; K(i, k) = k(k - i, i)
-        ant = dt2*w%knt(k - i, i)
-        att = dt2*w%ktt(k - i, i)
-        ann = dt2*w%knn(k - i, i) + mu*w%sgn(k)*ant
-        atn = dt2*w%ktn(k - i, i) + mu*w%sgn(k)*att
-        if (w%bmark(i) > 0 .and. w%bmark(k) > 0) then
+        ant = dt2*knt(k - i, i)
+        att = dt2*ktt(k - i, i)
+        ann = dt2*knn(k - i, i) + mu*sgn(k)*ant
+        atn = dt2*ktn(k - i, i) + mu*sgn(k)*att
+        if (bmark(i) > 0 .and. bmark(k) > 0) then
           ! both rows of N unit rows or empty (no open or slipping neighbour, no border):
           ! the same sums as add_block's
-          rn = w%ulam(i)
-          rt = max(w%uq(i), 0)
-          cn = w%ulam(k)
-          ct = max(w%uq(k), 0)
+          rn = ulam(i)
+          rt = max(uq(i), 0)
+          cn = ulam(k)
+          ct = max(uq(k), 0)
           if (rn > 0) then
-            if (cn > 0) w%ab(kv + rn - cn, cn) = w%ab(kv + rn - cn, cn) + ann
-            if (ct > 0) w%ab(kv + rn - ct, ct) = w%ab(kv + rn - ct, ct) + ant
+            if (cn > 0) ab(kv + rn - cn, cn) = ab(kv + rn - cn, cn) + ann
+            if (ct > 0) ab(kv + rn - ct, ct) = ab(kv + rn - ct, ct) + ant
           end if
           if (rt > 0) then
-            if (cn > 0) w%ab(kv + rt - cn, cn) = w%ab(kv + rt - cn, cn) + atn
-            if (ct > 0) w%ab(kv + rt - ct, ct) = w%ab(kv + rt - ct, ct) + att
+            if (cn > 0) ab(kv + rt - cn, cn) = ab(kv + rt - cn, cn) + atn
+            if (ct > 0) ab(kv + rt - ct, ct) = ab(kv + rt - ct, ct) + att
           end if
           cycle
         end if
-        call add_block(w%ncnt(i), w%ncol(:, i), w%nval(:, i), w%ncnt(k), w%ncol(:, k), w%nval(:, k), ann)
-        call add_block(w%ncnt(i), w%ncol(:, i), w%nval(:, i), w%tcnt(k), w%tcol(:, k), w%tval(:, k), ant)
-        call add_block(w%tcnt(i), w%tcol(:, i), w%tval(:, i), w%ncnt(k), w%ncol(:, k), w%nval(:, k), atn)
-        call add_block(w%tcnt(i), w%tcol(:, i), w%tval(:, i), w%tcnt(k), w%tcol(:, k), w%tval(:, k), att)
+        call add_block(ncnt(i), ncol(:, i), nval(:, i), ncnt(k), ncol(:, k), nval(:, k), ann)
+        call add_block(ncnt(i), ncol(:, i), nval(:, i), tcnt(k), tcol(:, k), tval(:, k), ant)
+        call add_block(tcnt(i), tcol(:, i), tval(:, i), ncnt(k), ncol(:, k), nval(:, k), atn)
+        call add_block(tcnt(i), tcol(:, i), tval(:, i), tcnt(k), tcol(:, k), tval(:, k), att)
       end do
     end do
     do r = 1, n
       sc = 0.0_wp
-      do c = w%fcol(r), w%lcol(r)
-        sc = max(sc, abs(w%ab(kv + r - c, c)))
+      do c = fcol(r), lcol(r)
+        sc = max(sc, abs(ab(kv + r - c, c)))
       end do
       do b = 1, nb
-        sc = max(sc, abs(w%bc(r, b)))
+        sc = max(sc, abs(bc(r, b)))
       end do
       if (sc <= 0.0_wp) then
         info = -5
         return
       end if
       sc = 1.0_wp/sc
-      do c = w%fcol(r), w%lcol(r)
-        w%ab(kv + r - c, c) = w%ab(kv + r - c, c)*sc
+      do c = fcol(r), lcol(r)
+        ab(kv + r - c, c) = ab(kv + r - c, c)*sc
       end do
       do b = 1, nb
-        w%bc(r, b) = w%bc(r, b)*sc
+        bc(r, b) = bc(r, b)*sc
       end do
-      w%rhs(r) = w%rhs(r)*sc
+      rhs(r) = rhs(r)*sc
     end do
   contains
     subroutine add_rhs(cnt, col, val, g)
-      integer, intent(in) :: cnt, col(:)
-      real(wp), intent(in) :: val(:), g
+      integer, intent(in) :: cnt, col(ZMAX)
+      real(wp), intent(in) :: val(ZMAX), g
       integer :: e
       do e = 1, cnt
         if (col(e) > 0) then
-          w%rhs(col(e)) = w%rhs(col(e)) + val(e)*g
+          rhs(col(e)) = rhs(col(e)) + val(e)*g
         else
-          w%bg(-col(e)) = w%bg(-col(e)) + val(e)*g
+          bg(-col(e)) = bg(-col(e)) + val(e)*g
         end if
       end do
     end subroutine add_rhs
     subroutine add_block(cr, colr, valr, cc, colc, valc, a)
-      integer, intent(in) :: cr, colr(:), cc, colc(:)
-      real(wp), intent(in) :: valr(:), valc(:), a
+      integer, intent(in) :: cr, colr(ZMAX), cc, colc(ZMAX)
+      real(wp), intent(in) :: valr(ZMAX), valc(ZMAX), a
       integer :: e1, e2, r, c
       real(wp) :: x
       if (a == 0.0_wp) return
@@ -526,21 +551,21 @@ contains
           c = colc(e2)
           if (r > 0) then
             if (c > 0) then
-              w%ab(kv + r - c, c) = w%ab(kv + r - c, c) + x*valc(e2)
+              ab(kv + r - c, c) = ab(kv + r - c, c) + x*valc(e2)
             else
-              w%bc(r, -c) = w%bc(r, -c) + x*valc(e2)
+              bc(r, -c) = bc(r, -c) + x*valc(e2)
             end if
           else
             if (c > 0) then
-              w%bd(c, -r) = w%bd(c, -r) + x*valc(e2)
+              bd(c, -r) = bd(c, -r) + x*valc(e2)
             else
-              w%be(-r, -c) = w%be(-r, -c) + x*valc(e2)
+              be(-r, -c) = be(-r, -c) + x*valc(e2)
             end if
           end if
         end do
       end do
     end subroutine add_block
-  end subroutine friction_matrix
+  end subroutine assemble_friction
 
   !> Solve [B C; D' E] [x; y] = [rhs; bg] in place (x in rhs, y in bg):
   !> B by the band LU, then the border unknowns from the Schur complement
