@@ -434,8 +434,9 @@ contains
     integer, intent(out) :: info
     integer :: m
     m = cs%m
+    ! (w%ab as a contiguous (2 kl + ku + 1, n) block: one memset, dense columns)
     call assemble_friction(m, w%kb, ubound(w%knn, 1), size(w%knn, 2), dt2, mu, n, nb, kl, ku, &
-      size(w%ab, 1), size(w%ab, 2), size(w%bc, 1), &
+      size(w%bc, 1), &
       cs%gap_w(1:m), cs%slip_w(1:m), w%knn, w%knt, w%ktn, w%ktt, w%sgn(1:m), w%bmark(1:m), &
       w%ulam(1:m), w%uq(1:m), w%ncnt(1:m), w%ncol(:, 1:m), w%nval(:, 1:m), &
       w%tcnt(1:m), w%tcol(:, 1:m), w%tval(:, 1:m), w%fcol(1:n), w%lcol(1:n), &
@@ -443,17 +444,17 @@ contains
   end subroutine friction_matrix
 
   !> friction_matrix on explicit-shape arrays: the same sums in the same order.
-  subroutine assemble_friction(m, kb, kbs, ncap, dt2, mu, n, nb, kl, ku, lda, nabcap, ldb, &
+  subroutine assemble_friction(m, kb, kbs, ncap, dt2, mu, n, nb, kl, ku, ldb, &
       gap_w, slip_w, knn, knt, ktn, ktt, sgn, bmark, ulam, uq, ncnt, ncol, nval, &
       tcnt, tcol, tval, fcol, lcol, ab, rhs, bc, bd, be, bg, info)
-    integer, intent(in) :: m, kb, kbs, ncap, n, nb, kl, ku, lda, nabcap, ldb
+    integer, intent(in) :: m, kb, kbs, ncap, n, nb, kl, ku, ldb
     real(wp), intent(in) :: dt2, mu
     real(wp), intent(in) :: gap_w(m), slip_w(m), sgn(m)
     real(wp), intent(in), dimension(-kbs:kbs, ncap) :: knn, knt, ktn, ktt
     integer, intent(in) :: bmark(m), ulam(m), uq(m), ncnt(m), ncol(ZMAX, m), tcnt(m), tcol(ZMAX, m)
     real(wp), intent(in) :: nval(ZMAX, m), tval(ZMAX, m)
     integer, intent(in) :: fcol(n), lcol(n)
-    real(wp), intent(inout) :: ab(lda, nabcap), rhs(n)
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n), rhs(n)
     real(wp), intent(inout) :: bc(ldb, BORDER_MAX), bd(ldb, BORDER_MAX), be(BORDER_MAX, BORDER_MAX + 1)
     real(wp), intent(inout) :: bg(BORDER_MAX)
     integer, intent(out) :: info
@@ -462,7 +463,7 @@ contains
     info = 0
     ldab = 2*kl + ku + 1
     kv = kl + ku + 1
-    ab(1:ldab, 1:n) = 0.0_wp
+    ab = 0.0_wp
     rhs(1:n) = 0.0_wp
     if (nb > 0) then
       bc(1:n, 1:nb) = 0.0_wp
@@ -570,44 +571,58 @@ contains
   !> Solve [B C; D' E] [x; y] = [rhs; bg] in place (x in rhs, y in bg):
   !> B by the band LU, then the border unknowns from the Schur complement
   !> E - D' B^-1 C (dense LU with partial pivoting, nb <= BORDER_MAX), x =
-  !> B^-1 (rhs - C y).
+  !> B^-1 (rhs - C y). B is w%ab read as a contiguous (2 kl + ku + 1, n)
+  !> block, as assemble_friction wrote it.
   subroutine solve_bordered(n, nb, kl, ku, w, info)
     integer, intent(in) :: n, nb, kl, ku
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: info
-    integer :: ldab, b, b2, c, piv, ip(BORDER_MAX)
+    call bordered_kernel(n, nb, kl, ku, size(w%bc, 1), w%ab, w%ipiv, w%fcol(1:n), w%lcol(1:n), w%ext, &
+      w%rhs(1:n), w%bc, w%bd, w%bx, w%be, w%bg, info)
+  end subroutine solve_bordered
+
+  !> solve_bordered on explicit-shape arrays.
+  subroutine bordered_kernel(n, nb, kl, ku, ldb, ab, ipiv, fcol, lcol, ext, rhs, bc, bd, bx, be, bg, info)
+    integer, intent(in) :: n, nb, kl, ku, ldb
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n)
+    integer, intent(inout) :: ipiv(:), ext(:)
+    integer, intent(in) :: fcol(n), lcol(n)
+    real(wp), intent(inout) :: rhs(n)
+    real(wp), intent(inout), dimension(ldb, BORDER_MAX) :: bc, bd, bx
+    real(wp), intent(inout) :: be(BORDER_MAX, BORDER_MAX + 1), bg(BORDER_MAX)
+    integer, intent(out) :: info
+    integer :: b, b2, c, piv, ip(BORDER_MAX)
     real(wp) :: t, amax
-    ldab = 2*kl + ku + 1
-    call band_factor(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%fcol, w%lcol, w%ext, info)
+    call band_factor(n, kl, ku, ab, ipiv, fcol, lcol, ext, info)
     if (info /= 0) return
-    call band_subst(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%ext, w%rhs)
+    call band_subst(n, kl, ku, ab, ipiv, ext, rhs)
     if (nb == 0) return
     do b = 1, nb
-      w%bx(1:n, b) = w%bc(1:n, b)
-      call band_subst(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%ext, w%bx(:, b))
+      bx(1:n, b) = bc(1:n, b)
+      call band_subst(n, kl, ku, ab, ipiv, ext, bx(1:n, b))
     end do
     ! S = E - D' X, g - D' x
     do b = 1, nb
-      t = w%bg(b)
+      t = bg(b)
       do c = 1, n
-        t = t - w%bd(c, b)*w%rhs(c)
+        t = t - bd(c, b)*rhs(c)
       end do
-      w%bg(b) = t
+      bg(b) = t
       do b2 = 1, nb
-        t = w%be(b, b2)
+        t = be(b, b2)
         do c = 1, n
-          t = t - w%bd(c, b)*w%bx(c, b2)
+          t = t - bd(c, b)*bx(c, b2)
         end do
-        w%be(b, b2) = t
+        be(b, b2) = t
       end do
     end do
     ! Dense LU with partial pivoting, then the solve.
     do c = 1, nb
       piv = c
-      amax = abs(w%be(c, c))
+      amax = abs(be(c, c))
       do b = c + 1, nb
-        if (abs(w%be(b, c)) > amax) then
-          amax = abs(w%be(b, c))
+        if (abs(be(b, c)) > amax) then
+          amax = abs(be(b, c))
           piv = b
         end if
       end do
@@ -618,36 +633,36 @@ contains
       end if
       if (piv /= c) then
         do b2 = 1, nb
-          t = w%be(c, b2)
-          w%be(c, b2) = w%be(piv, b2)
-          w%be(piv, b2) = t
+          t = be(c, b2)
+          be(c, b2) = be(piv, b2)
+          be(piv, b2) = t
         end do
-        t = w%bg(c)
-        w%bg(c) = w%bg(piv)
-        w%bg(piv) = t
+        t = bg(c)
+        bg(c) = bg(piv)
+        bg(piv) = t
       end if
       do b = c + 1, nb
-        t = w%be(b, c)/w%be(c, c)
-        w%be(b, c) = t
+        t = be(b, c)/be(c, c)
+        be(b, c) = t
         do b2 = c + 1, nb
-          w%be(b, b2) = w%be(b, b2) - t*w%be(c, b2)
+          be(b, b2) = be(b, b2) - t*be(c, b2)
         end do
-        w%bg(b) = w%bg(b) - t*w%bg(c)
+        bg(b) = bg(b) - t*bg(c)
       end do
     end do
     do c = nb, 1, -1
-      t = w%bg(c)
+      t = bg(c)
       do b2 = c + 1, nb
-        t = t - w%be(c, b2)*w%bg(b2)
+        t = t - be(c, b2)*bg(b2)
       end do
-      w%bg(c) = t/w%be(c, c)
+      bg(c) = t/be(c, c)
     end do
     ! x = B^-1 rhs - X y
     do b = 1, nb
-      t = w%bg(b)
+      t = bg(b)
       do c = 1, n
-        w%rhs(c) = w%rhs(c) - w%bx(c, b)*t
+        rhs(c) = rhs(c) - bx(c, b)*t
       end do
     end do
-  end subroutine solve_bordered
+  end subroutine bordered_kernel
 end module raccord_banded_friction_form
