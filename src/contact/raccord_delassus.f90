@@ -88,17 +88,21 @@ contains
 
   !> Knn of delassus, the band zeroed over its whole height (one contiguous
   !> block; only the rows -kb:kb are read). Stored as k(jb - ja, ja) =
-  !> K(ja, jb). Both orders of a pair are summed as written: copying the
-  !> mirror entry, symmetric to round-off, moved the active set of
-  !> test_curved's mortar P0 case (doc/theory-contact.md, section 3).
+  !> K(ja, jb). Both orders of a pair are summed as written, each with its
+  !> own products (w_a w_b (n_a M^-1) . n_b and w_b w_a (n_b M^-1) . n_a,
+  !> as the loop over ordered pairs computed them), in one pass over the
+  !> unordered pairs: copying the mirror entry instead, symmetric only to
+  !> round-off, moved the active set of test_curved's mortar P0 case
+  !> (doc/theory-contact.md, section 3). The rows of a node are listed in
+  !> increasing order, so d = jb - ja > 0 for b after a.
   subroutine pair_sums_normal(m, kbs, ncap, nn, nent, ntouched, touched, node_ptr, node_last, &
       node_row, node_w, normal, minv, alpha, h_ratio, h, knn)
     integer, intent(in) :: m, kbs, ncap, nn, nent, ntouched
     integer, intent(in) :: touched(ntouched), node_ptr(:), node_last(:), node_row(nent)
     real(wp), intent(in) :: node_w(nent), normal(2, m), minv(2, nn), alpha(nn), h_ratio, h
     real(wp), intent(inout) :: knn(-kbs:kbs, ncap)
-    integer :: t, p, a, b, ja, jb
-    real(wp) :: mi(2), wa, wab, xn1, xn2, s
+    integer :: t, p, a, b, ja, jb, d
+    real(wp) :: mi(2), wa, wab, na1, na2, xa1, xa2, nb1, nb2, xb1, xb2, s
     knn(:, 1:m) = 0.0_wp
     do t = 1, ntouched
       p = touched(t)
@@ -106,14 +110,27 @@ contains
       do a = node_ptr(p), node_last(p) - 1
         ja = node_row(a)
         wa = node_w(a)
-        xn1 = normal(1, ja)*mi(1)
-        xn2 = normal(2, ja)*mi(2)
-        do b = node_ptr(p), node_last(p) - 1
+        na1 = normal(1, ja)
+        na2 = normal(2, ja)
+        xa1 = na1*mi(1)
+        xa2 = na2*mi(2)
+        s = xa1*na1
+        s = s + xa2*na2
+        knn(0, ja) = knn(0, ja) + (wa*wa)*s
+        do b = a + 1, node_last(p) - 1
           jb = node_row(b)
+          d = jb - ja
           wab = wa*node_w(b)
-          s = xn1*normal(1, jb)
-          s = s + xn2*normal(2, jb)
-          knn(jb - ja, ja) = knn(jb - ja, ja) + wab*s
+          nb1 = normal(1, jb)
+          nb2 = normal(2, jb)
+          xb1 = nb1*mi(1)
+          xb2 = nb2*mi(2)
+          s = xa1*nb1
+          s = s + xa2*nb2
+          knn(d, ja) = knn(d, ja) + wab*s
+          s = xb1*na1
+          s = s + xb2*na2
+          knn(-d, jb) = knn(-d, jb) + wab*s
         end do
       end do
     end do
@@ -128,7 +145,8 @@ contains
     real(wp), intent(inout) :: knn(-kbs:kbs, ncap), knt(-kbs:kbs, ncap)
     real(wp), intent(inout) :: ktn(-kbs:kbs, ncap), ktt(-kbs:kbs, ncap)
     integer :: t, p, a, b, ja, jb, d
-    real(wp) :: mi(2), wa, wab, xn1, xn2, xt1, xt2, s
+    real(wp) :: mi(2), wa, wab, s
+    real(wp) :: na1, na2, ta1, ta2, xa1, xa2, ya1, ya2, nb1, nb2, tb1, tb2, xb1, xb2, yb1, yb2
     knn(:, 1:m) = 0.0_wp
     knt(:, 1:m) = 0.0_wp
     ktn(:, 1:m) = 0.0_wp
@@ -139,26 +157,65 @@ contains
       do a = node_ptr(p), node_last(p) - 1
         ja = node_row(a)
         wa = node_w(a)
-        xn1 = normal(1, ja)*mi(1)
-        xn2 = normal(2, ja)*mi(2)
-        xt1 = tangent(1, ja)*mi(1)
-        xt2 = tangent(2, ja)*mi(2)
-        do b = node_ptr(p), node_last(p) - 1
+        na1 = normal(1, ja)
+        na2 = normal(2, ja)
+        ta1 = tangent(1, ja)
+        ta2 = tangent(2, ja)
+        xa1 = na1*mi(1)        ! (n_a M^-1), (t_a M^-1)
+        xa2 = na2*mi(2)
+        ya1 = ta1*mi(1)
+        ya2 = ta2*mi(2)
+        wab = wa*wa
+        s = xa1*na1
+        s = s + xa2*na2
+        knn(0, ja) = knn(0, ja) + wab*s
+        s = xa1*ta1
+        s = s + xa2*ta2
+        knt(0, ja) = knt(0, ja) + wab*s
+        s = ya1*na1
+        s = s + ya2*na2
+        ktn(0, ja) = ktn(0, ja) + wab*s
+        s = ya1*ta1
+        s = s + ya2*ta2
+        ktt(0, ja) = ktt(0, ja) + wab*s
+        do b = a + 1, node_last(p) - 1
           jb = node_row(b)
           d = jb - ja
           wab = wa*node_w(b)
-          s = xn1*normal(1, jb)
-          s = s + xn2*normal(2, jb)
+          nb1 = normal(1, jb)
+          nb2 = normal(2, jb)
+          tb1 = tangent(1, jb)
+          tb2 = tangent(2, jb)
+          xb1 = nb1*mi(1)
+          xb2 = nb2*mi(2)
+          yb1 = tb1*mi(1)
+          yb2 = tb2*mi(2)
+          ! K(ja, jb)
+          s = xa1*nb1
+          s = s + xa2*nb2
           knn(d, ja) = knn(d, ja) + wab*s
-          s = xn1*tangent(1, jb)
-          s = s + xn2*tangent(2, jb)
+          s = xa1*tb1
+          s = s + xa2*tb2
           knt(d, ja) = knt(d, ja) + wab*s
-          s = xt1*normal(1, jb)
-          s = s + xt2*normal(2, jb)
+          s = ya1*nb1
+          s = s + ya2*nb2
           ktn(d, ja) = ktn(d, ja) + wab*s
-          s = xt1*tangent(1, jb)
-          s = s + xt2*tangent(2, jb)
+          s = ya1*tb1
+          s = s + ya2*tb2
           ktt(d, ja) = ktt(d, ja) + wab*s
+          ! K(jb, ja), its own products
+          s = xb1*na1
+          s = s + xb2*na2
+          knn(-d, jb) = knn(-d, jb) + wab*s
+          s = xb1*ta1
+          s = s + xb2*ta2
+          knt(-d, jb) = knt(-d, jb) + wab*s
+          s = yb1*na1
+          s = s + yb2*na2
+          ktn(-d, jb) = ktn(-d, jb) + wab*s
+          s = yb1*ta1
+          s = s + yb2*ta2
+          ktt(-d, jb) = ktt(-d, jb) + wab*s
         end do
       end do
     end do
