@@ -458,8 +458,8 @@ contains
     real(wp), intent(inout) :: bc(ldb, BORDER_MAX), bd(ldb, BORDER_MAX), be(BORDER_MAX, BORDER_MAX + 1)
     real(wp), intent(inout) :: bg(BORDER_MAX)
     integer, intent(out) :: info
-    integer :: i, k, ldab, kv, r, c, b, rn, rt, cn, ct
-    real(wp) :: ann, ant, atn, att, sc
+    integer :: i, k, ldab, kv, r, c, b, rn, rt, cn, ct, blk, cr, cc, e1, e2
+    real(wp) :: ann, ant, atn, att, sc, a, x, y
     info = 0
     ldab = 2*kl + ku + 1
     kv = kl + ku + 1
@@ -499,10 +499,64 @@ contains
           end if
           cycle
         end if
-        call add_block(ncnt(i), ncol(:, i), nval(:, i), ncnt(k), ncol(:, k), nval(:, k), ann)
-        call add_block(ncnt(i), ncol(:, i), nval(:, i), tcnt(k), tcol(:, k), tval(:, k), ant)
-        call add_block(tcnt(i), tcol(:, i), tval(:, i), ncnt(k), ncol(:, k), nval(:, k), atn)
-        call add_block(tcnt(i), tcol(:, i), tval(:, i), tcnt(k), tcol(:, k), tval(:, k), att)
+        ! The four blocks N(i, :)' a N(k, :), row side n (blk 1, 2) or t,
+        ! column side n (blk 1, 3) or t. Each entry of the matrix gets at
+        ! most one term per pair (i, k) (lambda and q columns are distinct,
+        ! so are the columns within a row of N), so the blocks' order does
+        ! not matter; written as one loop, not four calls, so that it
+        ! stays inlined (a call per block cost more than its sums).
+        do blk = 1, 4
+          select case (blk)
+          case (1)
+            a = ann
+            cr = ncnt(i)
+            cc = ncnt(k)
+          case (2)
+            a = ant
+            cr = ncnt(i)
+            cc = tcnt(k)
+          case (3)
+            a = atn
+            cr = tcnt(i)
+            cc = ncnt(k)
+          case default
+            a = att
+            cr = tcnt(i)
+            cc = tcnt(k)
+          end select
+          if (a == 0.0_wp) cycle
+          do e1 = 1, cr
+            if (blk <= 2) then
+              r = ncol(e1, i)
+              x = nval(e1, i)*a
+            else
+              r = tcol(e1, i)
+              x = tval(e1, i)*a
+            end if
+            do e2 = 1, cc
+              if (blk == 1 .or. blk == 3) then
+                c = ncol(e2, k)
+                y = x*nval(e2, k)
+              else
+                c = tcol(e2, k)
+                y = x*tval(e2, k)
+              end if
+              if (r > 0) then
+                if (c > 0) then
+                  ab(kv + r - c, c) = ab(kv + r - c, c) + y
+                else
+                  bc(r, -c) = bc(r, -c) + y
+                end if
+              else
+                if (c > 0) then
+                  bd(c, -r) = bd(c, -r) + y
+                else
+                  be(-r, -c) = be(-r, -c) + y
+                end if
+              end if
+            end do
+          end do
+        end do
       end do
     end do
     do r = 1, n
@@ -539,33 +593,6 @@ contains
         end if
       end do
     end subroutine add_rhs
-    subroutine add_block(cr, colr, valr, cc, colc, valc, a)
-      integer, intent(in) :: cr, colr(ZMAX), cc, colc(ZMAX)
-      real(wp), intent(in) :: valr(ZMAX), valc(ZMAX), a
-      integer :: e1, e2, r, c
-      real(wp) :: x
-      if (a == 0.0_wp) return
-      do e1 = 1, cr
-        r = colr(e1)
-        x = valr(e1)*a
-        do e2 = 1, cc
-          c = colc(e2)
-          if (r > 0) then
-            if (c > 0) then
-              ab(kv + r - c, c) = ab(kv + r - c, c) + x*valc(e2)
-            else
-              bc(r, -c) = bc(r, -c) + x*valc(e2)
-            end if
-          else
-            if (c > 0) then
-              bd(c, -r) = bd(c, -r) + x*valc(e2)
-            else
-              be(-r, -c) = be(-r, -c) + x*valc(e2)
-            end if
-          end if
-        end do
-      end do
-    end subroutine add_block
   end subroutine assemble_friction
 
   !> Solve [B C; D' E] [x; y] = [rhs; bg] in place (x in rhs, y in bg):
