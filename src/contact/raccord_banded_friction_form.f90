@@ -127,7 +127,7 @@ contains
       call friction_profile(cs, n, w, kl, ku)
       ldab = 2*kl + ku + 1
       call ensure2(w%ab, ldab, n)
-      call friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, info)
+      call friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, w%ab, info)
       if (info /= 0) return
       call solve_bordered(n, nb, kl, ku, w, info)
       if (info /= 0) return
@@ -424,71 +424,49 @@ contains
   !> block B in w%ab (general band storage), the border columns C (bc),
   !> rows D' (bd: bd(c, b) = row b, column c) and block E (be), the
   !> right-hand sides in rhs and bg. Banded rows are scaled to unit largest
-  !> entry (over B and C), as in the saddle form. The sums run in
-  !> assemble_friction on explicit-shape arrays (issue #16, fifth pass).
-  subroutine friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, info)
+  !> entry (over B and C), as in the saddle form. B is w%ab passed as ab,
+  !> one contiguous (2 kl + ku + 1, n) block (zeroed in one pass). (The
+  !> same sums moved into an explicit-shape kernel ran 10 % slower on
+  !> Fig. 3: inlined into the driver, the four block updates of a pair
+  !> compiled worse; issue #16, fifth pass.)
+  subroutine friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, ab, info)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt2, mu
     integer, intent(in) :: n, nb, kl, ku
-    type(solver_work_t), intent(inout) :: w
+    type(solver_work_t), intent(inout) :: w     !< (its ab only through the argument ab)
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n)   !< w%ab as one contiguous block
     integer, intent(out) :: info
-    integer :: m
+    integer :: m, i, k, kv, r, c, b, rn, rt, cn, ct
+    real(wp) :: ann, ant, atn, att, sc
     m = cs%m
-    ! (w%ab as a contiguous (2 kl + ku + 1, n) block: one memset, dense columns)
-    call assemble_friction(m, w%kb, ubound(w%knn, 1), size(w%knn, 2), dt2, mu, n, nb, kl, ku, &
-      size(w%bc, 1), &
-      cs%gap_w(1:m), cs%slip_w(1:m), w%knn, w%knt, w%ktn, w%ktt, w%sgn(1:m), w%bmark(1:m), &
-      w%ulam(1:m), w%uq(1:m), w%ncnt(1:m), w%ncol(:, 1:m), w%nval(:, 1:m), &
-      w%tcnt(1:m), w%tcol(:, 1:m), w%tval(:, 1:m), w%fcol(1:n), w%lcol(1:n), &
-      w%ab, w%rhs(1:n), w%bc, w%bd, w%be, w%bg, info)
-  end subroutine friction_matrix
-
-  !> friction_matrix on explicit-shape arrays: the same sums in the same order.
-  subroutine assemble_friction(m, kb, kbs, ncap, dt2, mu, n, nb, kl, ku, ldb, &
-      gap_w, slip_w, knn, knt, ktn, ktt, sgn, bmark, ulam, uq, ncnt, ncol, nval, &
-      tcnt, tcol, tval, fcol, lcol, ab, rhs, bc, bd, be, bg, info)
-    integer, intent(in) :: m, kb, kbs, ncap, n, nb, kl, ku, ldb
-    real(wp), intent(in) :: dt2, mu
-    real(wp), intent(in) :: gap_w(m), slip_w(m), sgn(m)
-    real(wp), intent(in), dimension(-kbs:kbs, ncap) :: knn, knt, ktn, ktt
-    integer, intent(in) :: bmark(m), ulam(m), uq(m), ncnt(m), ncol(ZMAX, m), tcnt(m), tcol(ZMAX, m)
-    real(wp), intent(in) :: nval(ZMAX, m), tval(ZMAX, m)
-    integer, intent(in) :: fcol(n), lcol(n)
-    real(wp), intent(inout) :: ab(2*kl + ku + 1, n), rhs(n)
-    real(wp), intent(inout) :: bc(ldb, BORDER_MAX), bd(ldb, BORDER_MAX), be(BORDER_MAX, BORDER_MAX + 1)
-    real(wp), intent(inout) :: bg(BORDER_MAX)
-    integer, intent(out) :: info
-    integer :: i, k, ldab, kv, r, c, b, rn, rt, cn, ct, blk, cr, cc, e1, e2
-    real(wp) :: ann, ant, atn, att, sc, a, x, y
     info = 0
-    ldab = 2*kl + ku + 1
     kv = kl + ku + 1
     ab = 0.0_wp
-    rhs(1:n) = 0.0_wp
+    w%rhs(1:n) = 0.0_wp
     if (nb > 0) then
-      bc(1:n, 1:nb) = 0.0_wp
-      bd(1:n, 1:nb) = 0.0_wp
-      be(1:nb, 1:nb) = 0.0_wp
-      bg(1:nb) = 0.0_wp
+      w%bc(1:n, 1:nb) = 0.0_wp
+      w%bd(1:n, 1:nb) = 0.0_wp
+      w%be(1:nb, 1:nb) = 0.0_wp
+      w%bg(1:nb) = 0.0_wp
     end if
     do i = 1, m
-      if (ncnt(i) == 0 .and. tcnt(i) == 0) cycle
-      call add_rhs(ncnt(i), ncol(:, i), nval(:, i), -gap_w(i))
-      call add_rhs(tcnt(i), tcol(:, i), tval(:, i), -slip_w(i))
-      do k = max(1, i - kb), min(m, i + kb)
-        if (ncnt(k) == 0 .and. tcnt(k) == 0) cycle
+      if (w%ncnt(i) == 0 .and. w%tcnt(i) == 0) cycle
+      call add_rhs(w%ncnt(i), w%ncol(:, i), w%nval(:, i), -cs%gap_w(i))
+      call add_rhs(w%tcnt(i), w%tcol(:, i), w%tval(:, i), -cs%slip_w(i))
+      do k = max(1, i - w%kb), min(m, i + w%kb)
+        if (w%ncnt(k) == 0 .and. w%tcnt(k) == 0) cycle
         ! (Mnn + mu Mnt S)(i, k), Mnt, (Mtn + mu Mtt S), Mtt; K(i, k) = k(k - i, i)
-        ant = dt2*knt(k - i, i)
-        att = dt2*ktt(k - i, i)
-        ann = dt2*knn(k - i, i) + mu*sgn(k)*ant
-        atn = dt2*ktn(k - i, i) + mu*sgn(k)*att
-        if (bmark(i) > 0 .and. bmark(k) > 0) then
+        ant = dt2*w%knt(k - i, i)
+        att = dt2*w%ktt(k - i, i)
+        ann = dt2*w%knn(k - i, i) + mu*w%sgn(k)*ant
+        atn = dt2*w%ktn(k - i, i) + mu*w%sgn(k)*att
+        if (w%bmark(i) > 0 .and. w%bmark(k) > 0) then
           ! both rows of N unit rows or empty (no open or slipping neighbour, no border):
           ! the same sums as add_block's
-          rn = ulam(i)
-          rt = max(uq(i), 0)
-          cn = ulam(k)
-          ct = max(uq(k), 0)
+          rn = w%ulam(i)
+          rt = max(w%uq(i), 0)
+          cn = w%ulam(k)
+          ct = max(w%uq(k), 0)
           if (rn > 0) then
             if (cn > 0) ab(kv + rn - cn, cn) = ab(kv + rn - cn, cn) + ann
             if (ct > 0) ab(kv + rn - ct, ct) = ab(kv + rn - ct, ct) + ant
@@ -499,101 +477,74 @@ contains
           end if
           cycle
         end if
-        ! The four blocks N(i, :)' a N(k, :), row side n (blk 1, 2) or t,
-        ! column side n (blk 1, 3) or t. Each entry of the matrix gets at
-        ! most one term per pair (i, k) (lambda and q columns are distinct,
-        ! so are the columns within a row of N), so the blocks' order does
-        ! not matter; written as one loop, not four calls, so that it
-        ! stays inlined (a call per block cost more than its sums).
-        do blk = 1, 4
-          select case (blk)
-          case (1)
-            a = ann
-            cr = ncnt(i)
-            cc = ncnt(k)
-          case (2)
-            a = ant
-            cr = ncnt(i)
-            cc = tcnt(k)
-          case (3)
-            a = atn
-            cr = tcnt(i)
-            cc = ncnt(k)
-          case default
-            a = att
-            cr = tcnt(i)
-            cc = tcnt(k)
-          end select
-          if (a == 0.0_wp) cycle
-          do e1 = 1, cr
-            if (blk <= 2) then
-              r = ncol(e1, i)
-              x = nval(e1, i)*a
-            else
-              r = tcol(e1, i)
-              x = tval(e1, i)*a
-            end if
-            do e2 = 1, cc
-              if (blk == 1 .or. blk == 3) then
-                c = ncol(e2, k)
-                y = x*nval(e2, k)
-              else
-                c = tcol(e2, k)
-                y = x*tval(e2, k)
-              end if
-              if (r > 0) then
-                if (c > 0) then
-                  ab(kv + r - c, c) = ab(kv + r - c, c) + y
-                else
-                  bc(r, -c) = bc(r, -c) + y
-                end if
-              else
-                if (c > 0) then
-                  bd(c, -r) = bd(c, -r) + y
-                else
-                  be(-r, -c) = be(-r, -c) + y
-                end if
-              end if
-            end do
-          end do
-        end do
+        call add_block(w%ncnt(i), w%ncol(:, i), w%nval(:, i), w%ncnt(k), w%ncol(:, k), w%nval(:, k), ann)
+        call add_block(w%ncnt(i), w%ncol(:, i), w%nval(:, i), w%tcnt(k), w%tcol(:, k), w%tval(:, k), ant)
+        call add_block(w%tcnt(i), w%tcol(:, i), w%tval(:, i), w%ncnt(k), w%ncol(:, k), w%nval(:, k), atn)
+        call add_block(w%tcnt(i), w%tcol(:, i), w%tval(:, i), w%tcnt(k), w%tcol(:, k), w%tval(:, k), att)
       end do
     end do
     do r = 1, n
       sc = 0.0_wp
-      do c = fcol(r), lcol(r)
+      do c = w%fcol(r), w%lcol(r)
         sc = max(sc, abs(ab(kv + r - c, c)))
       end do
       do b = 1, nb
-        sc = max(sc, abs(bc(r, b)))
+        sc = max(sc, abs(w%bc(r, b)))
       end do
       if (sc <= 0.0_wp) then
         info = -5
         return
       end if
       sc = 1.0_wp/sc
-      do c = fcol(r), lcol(r)
+      do c = w%fcol(r), w%lcol(r)
         ab(kv + r - c, c) = ab(kv + r - c, c)*sc
       end do
       do b = 1, nb
-        bc(r, b) = bc(r, b)*sc
+        w%bc(r, b) = w%bc(r, b)*sc
       end do
-      rhs(r) = rhs(r)*sc
+      w%rhs(r) = w%rhs(r)*sc
     end do
   contains
     subroutine add_rhs(cnt, col, val, g)
-      integer, intent(in) :: cnt, col(ZMAX)
-      real(wp), intent(in) :: val(ZMAX), g
+      integer, intent(in) :: cnt, col(:)
+      real(wp), intent(in) :: val(:), g
       integer :: e
       do e = 1, cnt
         if (col(e) > 0) then
-          rhs(col(e)) = rhs(col(e)) + val(e)*g
+          w%rhs(col(e)) = w%rhs(col(e)) + val(e)*g
         else
-          bg(-col(e)) = bg(-col(e)) + val(e)*g
+          w%bg(-col(e)) = w%bg(-col(e)) + val(e)*g
         end if
       end do
     end subroutine add_rhs
-  end subroutine assemble_friction
+    subroutine add_block(cr, colr, valr, cc, colc, valc, a)
+      integer, intent(in) :: cr, colr(:), cc, colc(:)
+      real(wp), intent(in) :: valr(:), valc(:), a
+      integer :: e1, e2, r, c
+      real(wp) :: x
+      if (a == 0.0_wp) return
+      do e1 = 1, cr
+        r = colr(e1)
+        x = valr(e1)*a
+        do e2 = 1, cc
+          c = colc(e2)
+          if (r > 0) then
+            if (c > 0) then
+              ab(kv + r - c, c) = ab(kv + r - c, c) + x*valc(e2)
+            else
+              w%bc(r, -c) = w%bc(r, -c) + x*valc(e2)
+            end if
+          else
+            if (c > 0) then
+              w%bd(c, -r) = w%bd(c, -r) + x*valc(e2)
+            else
+              w%be(-r, -c) = w%be(-r, -c) + x*valc(e2)
+            end if
+          end if
+        end do
+      end do
+    end subroutine add_block
+  end subroutine friction_matrix
 
   !> Solve [B C; D' E] [x; y] = [rhs; bg] in place (x in rhs, y in bg):
   !> B by the band LU, then the border unknowns from the Schur complement
