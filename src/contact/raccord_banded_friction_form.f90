@@ -57,6 +57,7 @@ contains
     integer, intent(out) :: info
     integer :: m, it, j, k, p, e, na, no, nu, n, nb, kl, ku, ldab, g1b
     real(wp) :: dt2, v
+    real(wp), allocatable :: abuf(:,:)
 
     m = cs%m
     g1b = cs%g1_band
@@ -127,7 +128,11 @@ contains
       call friction_profile(cs, n, w, kl, ku)
       ldab = 2*kl + ku + 1
       call ensure2(w%ab, ldab, n)
-      call friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, w%ab, info)
+      ! (w%ab lent to friction_matrix as a separate argument: moved out of
+      ! w and back, no copy and no allocation)
+      call move_alloc(w%ab, abuf)
+      call friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, abuf, info)
+      call move_alloc(abuf, w%ab)
       if (info /= 0) return
       call solve_bordered(n, nb, kl, ku, w, info)
       if (info /= 0) return
@@ -424,8 +429,9 @@ contains
   !> block B in w%ab (general band storage), the border columns C (bc),
   !> rows D' (bd: bd(c, b) = row b, column c) and block E (be), the
   !> right-hand sides in rhs and bg. Banded rows are scaled to unit largest
-  !> entry (over B and C), as in the saddle form. B is w%ab passed as ab,
-  !> one contiguous (2 kl + ku + 1, n) block (zeroed in one pass). (The
+  !> entry (over B and C), as in the saddle form. B is w%ab's storage
+  !> passed as ab, one contiguous (2 kl + ku + 1, n) block (zeroed in one
+  !> pass). (The
   !> same sums moved into an explicit-shape kernel ran 10 % slower on
   !> Fig. 3: inlined into the driver, the four block updates of a pair
   !> compiled worse; issue #16, fifth pass.)
@@ -433,8 +439,8 @@ contains
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt2, mu
     integer, intent(in) :: n, nb, kl, ku
-    type(solver_work_t), intent(inout) :: w     !< (its ab only through the argument ab)
-    real(wp), intent(inout) :: ab(2*kl + ku + 1, n)   !< w%ab as one contiguous block
+    type(solver_work_t), intent(inout) :: w     !< (its ab moved out into the argument ab)
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n)   !< w%ab's storage as one contiguous block
     integer, intent(out) :: info
     integer :: m, i, k, kv, r, c, b, rn, rt, cn, ct
     real(wp) :: ann, ant, atn, att, sc
@@ -550,7 +556,8 @@ contains
   !> B by the band LU, then the border unknowns from the Schur complement
   !> E - D' B^-1 C (dense LU with partial pivoting, nb <= BORDER_MAX), x =
   !> B^-1 (rhs - C y). B is w%ab read as a contiguous (2 kl + ku + 1, n)
-  !> block, as assemble_friction wrote it.
+  !> block, as friction_matrix wrote it. (bc, bd and bx are grown together,
+  !> so they share their leading dimension.)
   subroutine solve_bordered(n, nb, kl, ku, w, info)
     integer, intent(in) :: n, nb, kl, ku
     type(solver_work_t), intent(inout) :: w
