@@ -57,6 +57,7 @@ contains
     integer, intent(out) :: info
     integer :: m, it, j, k, p, e, na, no, nu, n, nb, kl, ku, ldab, g1b
     real(wp) :: dt2, v
+    real(wp), allocatable :: abuf(:,:)
 
     m = cs%m
     g1b = cs%g1_band
@@ -127,7 +128,11 @@ contains
       call friction_profile(cs, n, w, kl, ku)
       ldab = 2*kl + ku + 1
       call ensure2(w%ab, ldab, n)
-      call friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, info)
+      ! (w%ab lent to friction_matrix as a separate argument: moved out of
+      ! w and back, no copy and no allocation)
+      call move_alloc(w%ab, abuf)
+      call friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, abuf, info)
+      call move_alloc(abuf, w%ab)
       if (info /= 0) return
       call solve_bordered(n, nb, kl, ku, w, info)
       if (info /= 0) return
@@ -424,20 +429,25 @@ contains
   !> block B in w%ab (general band storage), the border columns C (bc),
   !> rows D' (bd: bd(c, b) = row b, column c) and block E (be), the
   !> right-hand sides in rhs and bg. Banded rows are scaled to unit largest
-  !> entry (over B and C), as in the saddle form.
-  subroutine friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, info)
+  !> entry (over B and C), as in the saddle form. B is w%ab's storage
+  !> passed as ab, one contiguous (2 kl + ku + 1, n) block (zeroed in one
+  !> pass). (The
+  !> same sums moved into an explicit-shape kernel ran 10 % slower on
+  !> Fig. 3: inlined into the driver, the four block updates of a pair
+  !> compiled worse; issue #16, fifth pass.)
+  subroutine friction_matrix(cs, dt2, mu, n, nb, kl, ku, w, ab, info)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt2, mu
     integer, intent(in) :: n, nb, kl, ku
-    type(solver_work_t), intent(inout) :: w
+    type(solver_work_t), intent(inout) :: w     !< (its ab moved out into the argument ab)
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n)   !< w%ab's storage as one contiguous block
     integer, intent(out) :: info
-    integer :: m, i, k, ldab, kv, r, c, b, rn, rt, cn, ct
+    integer :: m, i, k, kv, r, c, b, rn, rt, cn, ct
     real(wp) :: ann, ant, atn, att, sc
     m = cs%m
     info = 0
-    ldab = 2*kl + ku + 1
     kv = kl + ku + 1
-    w%ab(1:ldab, 1:n) = 0.0_wp
+    ab = 0.0_wp
     w%rhs(1:n) = 0.0_wp
     if (nb > 0) then
       w%bc(1:n, 1:nb) = 0.0_wp
@@ -464,12 +474,12 @@ contains
           cn = w%ulam(k)
           ct = max(w%uq(k), 0)
           if (rn > 0) then
-            if (cn > 0) w%ab(kv + rn - cn, cn) = w%ab(kv + rn - cn, cn) + ann
-            if (ct > 0) w%ab(kv + rn - ct, ct) = w%ab(kv + rn - ct, ct) + ant
+            if (cn > 0) ab(kv + rn - cn, cn) = ab(kv + rn - cn, cn) + ann
+            if (ct > 0) ab(kv + rn - ct, ct) = ab(kv + rn - ct, ct) + ant
           end if
           if (rt > 0) then
-            if (cn > 0) w%ab(kv + rt - cn, cn) = w%ab(kv + rt - cn, cn) + atn
-            if (ct > 0) w%ab(kv + rt - ct, ct) = w%ab(kv + rt - ct, ct) + att
+            if (cn > 0) ab(kv + rt - cn, cn) = ab(kv + rt - cn, cn) + atn
+            if (ct > 0) ab(kv + rt - ct, ct) = ab(kv + rt - ct, ct) + att
           end if
           cycle
         end if
@@ -482,7 +492,7 @@ contains
     do r = 1, n
       sc = 0.0_wp
       do c = w%fcol(r), w%lcol(r)
-        sc = max(sc, abs(w%ab(kv + r - c, c)))
+        sc = max(sc, abs(ab(kv + r - c, c)))
       end do
       do b = 1, nb
         sc = max(sc, abs(w%bc(r, b)))
@@ -493,7 +503,7 @@ contains
       end if
       sc = 1.0_wp/sc
       do c = w%fcol(r), w%lcol(r)
-        w%ab(kv + r - c, c) = w%ab(kv + r - c, c)*sc
+        ab(kv + r - c, c) = ab(kv + r - c, c)*sc
       end do
       do b = 1, nb
         w%bc(r, b) = w%bc(r, b)*sc
@@ -526,7 +536,7 @@ contains
           c = colc(e2)
           if (r > 0) then
             if (c > 0) then
-              w%ab(kv + r - c, c) = w%ab(kv + r - c, c) + x*valc(e2)
+              ab(kv + r - c, c) = ab(kv + r - c, c) + x*valc(e2)
             else
               w%bc(r, -c) = w%bc(r, -c) + x*valc(e2)
             end if
@@ -545,44 +555,59 @@ contains
   !> Solve [B C; D' E] [x; y] = [rhs; bg] in place (x in rhs, y in bg):
   !> B by the band LU, then the border unknowns from the Schur complement
   !> E - D' B^-1 C (dense LU with partial pivoting, nb <= BORDER_MAX), x =
-  !> B^-1 (rhs - C y).
+  !> B^-1 (rhs - C y). B is w%ab read as a contiguous (2 kl + ku + 1, n)
+  !> block, as friction_matrix wrote it. (bc, bd and bx are grown together,
+  !> so they share their leading dimension.)
   subroutine solve_bordered(n, nb, kl, ku, w, info)
     integer, intent(in) :: n, nb, kl, ku
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: info
-    integer :: ldab, b, b2, c, piv, ip(BORDER_MAX)
+    call bordered_kernel(n, nb, kl, ku, size(w%bc, 1), w%ab, w%ipiv, w%fcol(1:n), w%lcol(1:n), w%ext, &
+      w%rhs(1:n), w%bc, w%bd, w%bx, w%be, w%bg, info)
+  end subroutine solve_bordered
+
+  !> solve_bordered on explicit-shape arrays.
+  subroutine bordered_kernel(n, nb, kl, ku, ldb, ab, ipiv, fcol, lcol, ext, rhs, bc, bd, bx, be, bg, info)
+    integer, intent(in) :: n, nb, kl, ku, ldb
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n)
+    integer, intent(inout) :: ipiv(:), ext(:)
+    integer, intent(in) :: fcol(n), lcol(n)
+    real(wp), intent(inout) :: rhs(n)
+    real(wp), intent(inout), dimension(ldb, BORDER_MAX) :: bc, bd, bx
+    real(wp), intent(inout) :: be(BORDER_MAX, BORDER_MAX + 1), bg(BORDER_MAX)
+    integer, intent(out) :: info
+    integer :: b, b2, c, piv, ip(BORDER_MAX)
     real(wp) :: t, amax
-    ldab = 2*kl + ku + 1
-    call band_factor(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%fcol, w%lcol, w%ext, info)
+    call band_factor(n, kl, ku, ab, ipiv, fcol, lcol, ext, info)
     if (info /= 0) return
-    call band_subst(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%ext, w%rhs)
+    call band_subst(n, kl, ku, ab, ipiv, ext, rhs)
     if (nb == 0) return
     do b = 1, nb
-      w%bx(1:n, b) = w%bc(1:n, b)
-      call band_subst(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%ext, w%bx(:, b))
+      bx(1:n, b) = bc(1:n, b)
+      call band_subst(n, kl, ku, ab, ipiv, ext, bx(1:n, b))
     end do
     ! S = E - D' X, g - D' x
     do b = 1, nb
-      t = w%bg(b)
+      t = bg(b)
       do c = 1, n
-        t = t - w%bd(c, b)*w%rhs(c)
+        t = t - bd(c, b)*rhs(c)
       end do
-      w%bg(b) = t
+      bg(b) = t
       do b2 = 1, nb
-        t = w%be(b, b2)
+        t = be(b, b2)
         do c = 1, n
-          t = t - w%bd(c, b)*w%bx(c, b2)
+          t = t - bd(c, b)*bx(c, b2)
         end do
-        w%be(b, b2) = t
+        be(b, b2) = t
       end do
     end do
     ! Dense LU with partial pivoting, then the solve.
     do c = 1, nb
       piv = c
-      amax = abs(w%be(c, c))
+      amax = abs(be(c, c))
       do b = c + 1, nb
-        if (abs(w%be(b, c)) > amax) then
-          amax = abs(w%be(b, c))
+        if (abs(be(b, c)) > amax) then
+          amax = abs(be(b, c))
           piv = b
         end if
       end do
@@ -593,36 +618,36 @@ contains
       end if
       if (piv /= c) then
         do b2 = 1, nb
-          t = w%be(c, b2)
-          w%be(c, b2) = w%be(piv, b2)
-          w%be(piv, b2) = t
+          t = be(c, b2)
+          be(c, b2) = be(piv, b2)
+          be(piv, b2) = t
         end do
-        t = w%bg(c)
-        w%bg(c) = w%bg(piv)
-        w%bg(piv) = t
+        t = bg(c)
+        bg(c) = bg(piv)
+        bg(piv) = t
       end if
       do b = c + 1, nb
-        t = w%be(b, c)/w%be(c, c)
-        w%be(b, c) = t
+        t = be(b, c)/be(c, c)
+        be(b, c) = t
         do b2 = c + 1, nb
-          w%be(b, b2) = w%be(b, b2) - t*w%be(c, b2)
+          be(b, b2) = be(b, b2) - t*be(c, b2)
         end do
-        w%bg(b) = w%bg(b) - t*w%bg(c)
+        bg(b) = bg(b) - t*bg(c)
       end do
     end do
     do c = nb, 1, -1
-      t = w%bg(c)
+      t = bg(c)
       do b2 = c + 1, nb
-        t = t - w%be(c, b2)*w%bg(b2)
+        t = t - be(c, b2)*bg(b2)
       end do
-      w%bg(c) = t/w%be(c, c)
+      bg(c) = t/be(c, c)
     end do
     ! x = B^-1 rhs - X y
     do b = 1, nb
-      t = w%bg(b)
+      t = bg(b)
       do c = 1, n
-        w%rhs(c) = w%rhs(c) - w%bx(c, b)*t
+        rhs(c) = rhs(c) - bx(c, b)*t
       end do
     end do
-  end subroutine solve_bordered
+  end subroutine bordered_kernel
 end module raccord_banded_friction_form

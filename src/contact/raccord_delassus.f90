@@ -16,13 +16,16 @@ contains
   !> K(j, k) += w_jp w_kp n_j . (M_p^-1 n_k) for every node p the rows share.
   !> A force f at t(n) moves u(n+1) by dt^2 (h/dt) M^-1 f / (1 + alpha h/2):
   !> (CD-1) with its semi-implicit damping, and the half first step.
+  !> The rows touching each node are listed with their weights (node_row,
+  !> node_w), and the sums run in pair_sums_normal / _friction on
+  !> explicit-shape arrays (issue #16, fifth pass: the same products in the
+  !> same order, without the workspace's descriptors in the inner loop).
   subroutine delassus(cs, minv, alpha, h_ratio, h, friction, w)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: minv(:,:), alpha(:), h_ratio, h
     logical, intent(in) :: friction
     type(solver_work_t), intent(inout) :: w
-    integer :: m, j, e, p, nn, a, b, ja, jb, ea, eb, ntouched, t, pos
-    real(wp) :: wa, wb, mi(2)
+    integer :: m, j, e, p, nn, ntouched, t, pos, kbs, ncap
     m = cs%m
     nn = size(minv, 2)
     call ensure_work(w, m, nn, cs%nent)
@@ -49,9 +52,10 @@ contains
     do j = 1, m
       do e = cs%row_ptr(j), cs%row_ptr(j + 1) - 1
         p = cs%ent_node(e)
-        w%node_row(w%node_last(p)) = j
-        w%node_ent(w%node_last(p)) = e
-        w%node_last(p) = w%node_last(p) + 1
+        pos = w%node_last(p)
+        w%node_row(pos) = j
+        w%node_w(pos) = cs%ent_w(e)
+        w%node_last(p) = pos + 1
       end do
     end do
     ! A node's rows are listed in increasing order (filled row by row).
@@ -65,38 +69,155 @@ contains
     call ensure_band(w%knt, w%kb, m)
     call ensure_band(w%ktn, w%kb, m)
     call ensure_band(w%ktt, w%kb, m)
-    w%knn(-w%kb:w%kb, 1:m) = 0.0_wp
+    kbs = ubound(w%knn, 1)
+    ncap = size(w%knn, 2)
     if (friction) then
-      w%knt(-w%kb:w%kb, 1:m) = 0.0_wp
-      w%ktn(-w%kb:w%kb, 1:m) = 0.0_wp
-      w%ktt(-w%kb:w%kb, 1:m) = 0.0_wp
+      call pair_sums_friction(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
+        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
+        cs%normal(:, 1:m), cs%tangent(:, 1:m), minv, alpha, h_ratio, h, w%knn, w%knt, w%ktn, w%ktt)
+    else
+      call pair_sums_normal(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
+        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
+        cs%normal(:, 1:m), minv, alpha, h_ratio, h, w%knn)
     end if
-    do t = 1, ntouched
-      p = w%touched(t)
-      mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)
-      do a = w%node_ptr(p), w%node_last(p) - 1
-        ja = w%node_row(a)
-        ea = w%node_ent(a)
-        wa = cs%ent_w(ea)
-        do b = w%node_ptr(p), w%node_last(p) - 1
-          jb = w%node_row(b)
-          eb = w%node_ent(b)
-          wb = cs%ent_w(eb)
-          ! Stored as k(jb - ja, ja) = K(ja, jb). (Both orders of a pair are
-          ! summed as written: copying the mirror entry, symmetric to
-          ! round-off, moved the active set of test_curved's mortar P0 case.)
-          w%knn(jb - ja, ja) = w%knn(jb - ja, ja) + wa*wb*sum(cs%normal(:, ja)*mi*cs%normal(:, jb))
-          if (friction) then
-            w%knt(jb - ja, ja) = w%knt(jb - ja, ja) + wa*wb*sum(cs%normal(:, ja)*mi*cs%tangent(:, jb))
-            w%ktn(jb - ja, ja) = w%ktn(jb - ja, ja) + wa*wb*sum(cs%tangent(:, ja)*mi*cs%normal(:, jb))
-            w%ktt(jb - ja, ja) = w%ktt(jb - ja, ja) + wa*wb*sum(cs%tangent(:, ja)*mi*cs%tangent(:, jb))
-          end if
-        end do
-      end do
-    end do
     ! Reset the per-node marks for the next call (touched nodes only).
     do t = 1, ntouched
       w%node_first(w%touched(t)) = 0
     end do
   end subroutine delassus
+
+  !> Knn of delassus, the band zeroed over its whole height (one contiguous
+  !> block; only the rows -kb:kb are read). Stored as k(jb - ja, ja) =
+  !> K(ja, jb). Both orders of a pair are summed as written, each with its
+  !> own products (w_a w_b (n_a M^-1) . n_b and w_b w_a (n_b M^-1) . n_a,
+  !> as the loop over ordered pairs computed them), in one pass over the
+  !> unordered pairs: copying the mirror entry instead, symmetric only to
+  !> round-off, moved the active set of test_curved's mortar P0 case
+  !> (doc/theory-contact.md, section 3). The rows of a node are listed in
+  !> increasing order, so d = jb - ja > 0 for b after a.
+  subroutine pair_sums_normal(m, kbs, ncap, nn, nent, ntouched, touched, node_ptr, node_last, &
+      node_row, node_w, normal, minv, alpha, h_ratio, h, knn)
+    integer, intent(in) :: m, kbs, ncap, nn, nent, ntouched
+    integer, intent(in) :: touched(ntouched), node_ptr(:), node_last(:), node_row(nent)
+    real(wp), intent(in) :: node_w(nent), normal(2, m), minv(2, nn), alpha(nn), h_ratio, h
+    real(wp), intent(inout) :: knn(-kbs:kbs, ncap)
+    integer :: t, p, a, b, ja, jb, d
+    real(wp) :: mi(2), wa, wab, na1, na2, xa1, xa2, nb1, nb2, xb1, xb2, s
+    knn(:, 1:m) = 0.0_wp
+    do t = 1, ntouched
+      p = touched(t)
+      mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)
+      do a = node_ptr(p), node_last(p) - 1
+        ja = node_row(a)
+        wa = node_w(a)
+        na1 = normal(1, ja)
+        na2 = normal(2, ja)
+        xa1 = na1*mi(1)
+        xa2 = na2*mi(2)
+        s = xa1*na1
+        s = s + xa2*na2
+        knn(0, ja) = knn(0, ja) + (wa*wa)*s
+        do b = a + 1, node_last(p) - 1
+          jb = node_row(b)
+          d = jb - ja
+          wab = wa*node_w(b)
+          nb1 = normal(1, jb)
+          nb2 = normal(2, jb)
+          xb1 = nb1*mi(1)
+          xb2 = nb2*mi(2)
+          s = xa1*nb1
+          s = s + xa2*nb2
+          knn(d, ja) = knn(d, ja) + wab*s
+          s = xb1*na1
+          s = s + xb2*na2
+          knn(-d, jb) = knn(-d, jb) + wab*s
+        end do
+      end do
+    end do
+  end subroutine pair_sums_normal
+
+  !> The four blocks of delassus (n and t of each row), as pair_sums_normal.
+  subroutine pair_sums_friction(m, kbs, ncap, nn, nent, ntouched, touched, node_ptr, node_last, &
+      node_row, node_w, normal, tangent, minv, alpha, h_ratio, h, knn, knt, ktn, ktt)
+    integer, intent(in) :: m, kbs, ncap, nn, nent, ntouched
+    integer, intent(in) :: touched(ntouched), node_ptr(:), node_last(:), node_row(nent)
+    real(wp), intent(in) :: node_w(nent), normal(2, m), tangent(2, m), minv(2, nn), alpha(nn), h_ratio, h
+    real(wp), intent(inout) :: knn(-kbs:kbs, ncap), knt(-kbs:kbs, ncap)
+    real(wp), intent(inout) :: ktn(-kbs:kbs, ncap), ktt(-kbs:kbs, ncap)
+    integer :: t, p, a, b, ja, jb, d
+    real(wp) :: mi(2), wa, wab, s
+    real(wp) :: na1, na2, ta1, ta2, xa1, xa2, ya1, ya2, nb1, nb2, tb1, tb2, xb1, xb2, yb1, yb2
+    knn(:, 1:m) = 0.0_wp
+    knt(:, 1:m) = 0.0_wp
+    ktn(:, 1:m) = 0.0_wp
+    ktt(:, 1:m) = 0.0_wp
+    do t = 1, ntouched
+      p = touched(t)
+      mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)
+      do a = node_ptr(p), node_last(p) - 1
+        ja = node_row(a)
+        wa = node_w(a)
+        na1 = normal(1, ja)
+        na2 = normal(2, ja)
+        ta1 = tangent(1, ja)
+        ta2 = tangent(2, ja)
+        xa1 = na1*mi(1)        ! (n_a M^-1), (t_a M^-1)
+        xa2 = na2*mi(2)
+        ya1 = ta1*mi(1)
+        ya2 = ta2*mi(2)
+        wab = wa*wa
+        s = xa1*na1
+        s = s + xa2*na2
+        knn(0, ja) = knn(0, ja) + wab*s
+        s = xa1*ta1
+        s = s + xa2*ta2
+        knt(0, ja) = knt(0, ja) + wab*s
+        s = ya1*na1
+        s = s + ya2*na2
+        ktn(0, ja) = ktn(0, ja) + wab*s
+        s = ya1*ta1
+        s = s + ya2*ta2
+        ktt(0, ja) = ktt(0, ja) + wab*s
+        do b = a + 1, node_last(p) - 1
+          jb = node_row(b)
+          d = jb - ja
+          wab = wa*node_w(b)
+          nb1 = normal(1, jb)
+          nb2 = normal(2, jb)
+          tb1 = tangent(1, jb)
+          tb2 = tangent(2, jb)
+          xb1 = nb1*mi(1)
+          xb2 = nb2*mi(2)
+          yb1 = tb1*mi(1)
+          yb2 = tb2*mi(2)
+          ! K(ja, jb)
+          s = xa1*nb1
+          s = s + xa2*nb2
+          knn(d, ja) = knn(d, ja) + wab*s
+          s = xa1*tb1
+          s = s + xa2*tb2
+          knt(d, ja) = knt(d, ja) + wab*s
+          s = ya1*nb1
+          s = s + ya2*nb2
+          ktn(d, ja) = ktn(d, ja) + wab*s
+          s = ya1*tb1
+          s = s + ya2*tb2
+          ktt(d, ja) = ktt(d, ja) + wab*s
+          ! K(jb, ja), its own products
+          s = xb1*na1
+          s = s + xb2*na2
+          knn(-d, jb) = knn(-d, jb) + wab*s
+          s = xb1*ta1
+          s = s + xb2*ta2
+          knt(-d, jb) = knt(-d, jb) + wab*s
+          s = yb1*na1
+          s = s + yb2*na2
+          ktn(-d, jb) = ktn(-d, jb) + wab*s
+          s = yb1*ta1
+          s = s + yb2*ta2
+          ktt(-d, jb) = ktt(-d, jb) + wab*s
+        end do
+      end do
+    end do
+  end subroutine pair_sums_friction
 end module raccord_delassus

@@ -156,50 +156,69 @@ contains
 
   !> R = N' M N and its right-hand side -N' g_w* (in xr), in the active
   !> numbering, lower band: rb(d + 1, k) = R(k + d, k). M(a, b) = dt^2 Knn(a, b).
-  !> R = M_AA + M_AO Z + (M_AO Z)' + Z' M_OO Z.
+  !> R = M_AA + M_AO Z + (M_AO Z)' + Z' M_OO Z. The sums run in
+  !> assemble_reduced on explicit-shape arrays (issue #16, fifth pass).
   subroutine reduced_matrix(cs, dt2, no, krcap, w, kr, info)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt2
     integer, intent(in) :: no, krcap
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: kr, info
-    integer :: m, a, b, p, q, e, e2, o, o2, na
-    real(wp) :: z, v, mo
+    integer :: m
     m = cs%m
+    call assemble_reduced(m, no, w%kb, ubound(w%knn, 1), size(w%knn, 2), krcap, size(w%rb, 1), &
+      size(w%rb, 2), dt2, cs%gap_w(1:m), w%knn, w%ia(1:m), w%olist(1:max(no, 1)), &
+      w%zcnt(1:max(no, 1)), w%zcol(:, 1:max(no, 1)), w%zval(:, 1:max(no, 1)), w%rb, w%xr(1:m), kr, info)
+  end subroutine reduced_matrix
+
+  !> reduced_matrix on explicit-shape arrays: the same sums in the same order.
+  subroutine assemble_reduced(m, no, kb, kbs, ncap, krcap, ldr, nrcap, dt2, gap_w, knn, ia, olist, &
+      zcnt, zcol, zval, rb, xr, kr, info)
+    integer, intent(in) :: m, no, kb, kbs, ncap, krcap, ldr, nrcap
+    real(wp), intent(in) :: dt2, gap_w(m), knn(-kbs:kbs, ncap)
+    integer, intent(in) :: ia(m), olist(*), zcnt(*), zcol(ZMAX, *)
+    real(wp), intent(in) :: zval(ZMAX, *)
+    real(wp), intent(inout) :: rb(ldr, nrcap), xr(m)
+    integer, intent(out) :: kr, info
+    integer :: a, b, p, q, e, e2, o, o2, na
+    real(wp) :: z, v, mo
     info = 0
     kr = 0
-    na = count(w%ia(1:m) > 0)
-    w%rb(1:krcap + 1, 1:na) = 0.0_wp
+    na = 0
     do a = 1, m
-      if (w%ia(a) <= 0) cycle
-      w%xr(w%ia(a)) = -cs%gap_w(a)
-      do b = max(1, a - w%kb), a
-        if (w%ia(b) <= 0) cycle
+      if (ia(a) > 0) na = na + 1
+    end do
+    rb(1:krcap + 1, 1:na) = 0.0_wp
+    do a = 1, m
+      if (ia(a) <= 0) cycle
+      xr(ia(a)) = -gap_w(a)
+      do b = max(1, a - kb), a
+        if (ia(b) <= 0) cycle
         ! K(a, b) is stored as knn(b - a, a)
-        call add(w%ia(a), w%ia(b), dt2*w%knn(b - a, a))
+        call add(ia(a), ia(b), dt2*knn(b - a, a))
       end do
     end do
     do p = 1, no
-      o = w%olist(p)
-      do e = 1, w%zcnt(p)
-        b = w%zcol(e, p)
-        z = w%zval(e, p)
-        w%xr(w%ia(b)) = w%xr(w%ia(b)) - z*cs%gap_w(o)
+      o = olist(p)
+      do e = 1, zcnt(p)
+        b = zcol(e, p)
+        z = zval(e, p)
+        xr(ia(b)) = xr(ia(b)) - z*gap_w(o)
         ! M_AO Z and its transpose: one entry of the lower band each (twice on the diagonal)
-        do a = max(1, o - w%kb), min(m, o + w%kb)
-          if (w%ia(a) <= 0) cycle
-          v = z*dt2*w%knn(o - a, a)
+        do a = max(1, o - kb), min(m, o + kb)
+          if (ia(a) <= 0) cycle
+          v = z*dt2*knn(o - a, a)
           if (a == b) v = 2.0_wp*v
-          call add(max(w%ia(a), w%ia(b)), min(w%ia(a), w%ia(b)), v)
+          call add(max(ia(a), ia(b)), min(ia(a), ia(b)), v)
         end do
         ! Z' M_OO Z, the lower half
-        do o2 = max(1, o - w%kb), min(m, o + w%kb)
-          if (w%ia(o2) >= 0) cycle
-          q = -w%ia(o2)
-          mo = z*dt2*w%knn(o2 - o, o)
-          do e2 = 1, w%zcnt(q)
-            if (w%ia(b) < w%ia(w%zcol(e2, q))) cycle
-            call add(w%ia(b), w%ia(w%zcol(e2, q)), mo*w%zval(e2, q))
+        do o2 = max(1, o - kb), min(m, o + kb)
+          if (ia(o2) >= 0) cycle
+          q = -ia(o2)
+          mo = z*dt2*knn(o2 - o, o)
+          do e2 = 1, zcnt(q)
+            if (ia(b) < ia(zcol(e2, q))) cycle
+            call add(ia(b), ia(zcol(e2, q)), mo*zval(e2, q))
           end do
         end do
       end do
@@ -213,7 +232,7 @@ contains
         return
       end if
       kr = max(kr, i - k)
-      w%rb(i - k + 1, k) = w%rb(i - k + 1, k) + x
+      rb(i - k + 1, k) = rb(i - k + 1, k) + x
     end subroutine add
-  end subroutine reduced_matrix
+  end subroutine assemble_reduced
 end module raccord_frictionless_form

@@ -5,7 +5,7 @@
 module raccord_g1_runs
   use raccord_kinds, only: wp
   use raccord_constraint_set, only: constraint_set_t
-  use raccord_band_solver, only: band_solve
+  use raccord_band_solver, only: band_solve, band_factor, band_subst
   use raccord_solver_work, only: solver_work_t, ZMAX, ensure2
   implicit none
   private
@@ -67,10 +67,11 @@ contains
     real(wp), intent(inout) :: zval(:,:)
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: info
-    integer :: p1, p2, p, nc, b, g1b
+    integer :: p1, p2, p, nc, b, g1b, ldab
     real(wp) :: g
-    logical :: nz
+    logical :: nz, factored
     info = 0
+    ldab = 3*cs%g1_band + 1
     g1b = cs%g1_band
     p1 = 1
     runs: do while (p1 <= no)
@@ -81,6 +82,7 @@ contains
       end do
       nc = p2 - p1 + 1
       zcnt(p1:p2) = 0
+      factored = .false.
       do b = max(1, olist(p1) - g1b), min(cs%m, olist(p2) + g1b)
         if (ia(b) <= 0) cycle
         nz = .false.
@@ -92,8 +94,16 @@ contains
           nz = nz .or. w%xr(p - p1 + 1) /= 0.0_wp
         end do
         if (.not. nz) cycle
-        call run_solve(cs, olist, p1, nc, .false., w, info)
-        if (info /= 0) return
+        ! G1_CC factored once per run, at its first column (fifth pass:
+        ! band_solve per column repeated the factorisation; band_factor
+        ! and band_subst are its two halves, the same arithmetic)
+        if (.not. factored) then
+          call run_matrix(cs, olist, p1, nc, .false., w)
+          call band_factor(nc, g1b, g1b, w%ab(1:ldab, 1:nc), w%ipiv, w%fcol, w%lcol, w%ext, info)
+          if (info /= 0) return
+          factored = .true.
+        end if
+        call band_subst(nc, g1b, g1b, w%ab(1:ldab, 1:nc), w%ipiv, w%ext, w%xr)
         do p = p1, p2
           if (w%xr(p - p1 + 1) == 0.0_wp) cycle
           if (zcnt(p) == ZMAX) then
@@ -118,6 +128,21 @@ contains
     logical, intent(in) :: transposed
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: info
+    integer :: g1b, ldab
+    g1b = cs%g1_band
+    ldab = 3*g1b + 1
+    call run_matrix(cs, olist, p1, nc, transposed, w)
+    call band_solve(nc, g1b, g1b, w%ab(1:ldab, 1:nc), w%ipiv, w%xr, w%fcol, w%lcol, w%ext, info)
+  end subroutine run_solve
+
+  !> G1_CC (or G1_CC') of the open run olist(p1 : p1 + nc - 1) in w%ab
+  !> (band storage of dgbsv, kl = ku = g1_band) with each row's profile.
+  subroutine run_matrix(cs, olist, p1, nc, transposed, w)
+    type(constraint_set_t), intent(in) :: cs
+    integer, intent(in) :: olist(:)       !< the constraints of the runs
+    integer, intent(in) :: p1, nc
+    logical, intent(in) :: transposed
+    type(solver_work_t), intent(inout) :: w
     integer :: g1b, ldab, p, q, jp, jq
     g1b = cs%g1_band
     ldab = 3*g1b + 1
@@ -139,6 +164,5 @@ contains
         end if
       end do
     end do
-    call band_solve(nc, g1b, g1b, w%ab(1:ldab, 1:nc), w%ipiv, w%xr, w%fcol, w%lcol, w%ext, info)
-  end subroutine run_solve
+  end subroutine run_matrix
 end module raccord_g1_runs

@@ -25,8 +25,9 @@ module raccord_solver_work
     integer, allocatable :: fcol(:), lcol(:), ext(:)   !< per row: first, last column; band_solve scratch
     integer, allocatable :: ipiv(:)
     integer, allocatable :: node_first(:), node_last(:)   !< per global node: rows touching it
-    integer, allocatable :: node_ptr(:), node_row(:), node_ent(:)   !< node -> (row, entry) lists
+    integer, allocatable :: node_ptr(:), node_row(:)   !< node -> row lists
     integer, allocatable :: touched(:)
+    real(wp), allocatable :: node_w(:)   !< (nent) the weight of each node_row entry
     ! Reduced (Delassus) solve: compressed active index, open list, the
     ! open multipliers in terms of the active ones (Z), the band of R.
     integer, allocatable :: ia(:), olist(:), zcnt(:), zcol(:,:)
@@ -66,7 +67,7 @@ contains
       allocate(w%touched(nn))
     end if
     call ensure_i(w%node_row, nent)
-    call ensure_i(w%node_ent, nent)
+    call ensure1(w%node_w, nent)
     if (allocated(w%lam)) then
       if (size(w%lam) >= m) return
     end if
