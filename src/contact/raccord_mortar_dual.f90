@@ -21,6 +21,19 @@
 !>   2-node: [2 -1; -1 2]
 !>   3-node (start, end, mid): [3/2 1/2 -1/4; 1/2 3/2 -1/4; -1 -1 3/2]
 !> (tools/mortar/dual_coefficients.py derives them exactly).
+!>
+!> On the axis of an axisymmetric model (a 3-node edge with a corner at
+!> r = 0) the corner's ring weight integral of N_axis 2 pi r dGamma is zero
+!> on a straight edge with a centred mid node, but on the current geometry
+!> (a curved or deformed edge, a mid node off the centre) it is a small
+!> number of either sign, and its psi with it: the corner's row came and
+!> went with that sign, and each time it came back it pushed out in one
+!> step a corner that had sunk into the master while it had no row (energy
+!> given; doc/theory-contact-mortar.md section 9, "The axis"). The axis
+!> corner therefore has no multiplier: its psi is given to the mid node
+!> (the boundary modification of raccord_mortar's merge_uncovered, so
+!> sum_i psi_i = 1 still holds), and its position enters the mid node's
+!> row with its ring weight.
 module raccord_mortar_dual
   use raccord_kinds, only: wp, pi
   use raccord_shape, only: shape_line
@@ -37,6 +50,9 @@ module raccord_mortar_dual
   real(wp), parameter :: GS(3) = [-0.774596669241483377_wp, 0.0_wp, 0.774596669241483377_wp]
   real(wp), parameter :: GW(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
 
+  ! A node with |r| at most this times the edge's largest |r| is on the axis.
+  real(wp), parameter :: AXIS_TOL = 1.0e-12_wp
+
   public :: dual_coefficients, dual_basis
 
 contains
@@ -44,13 +60,15 @@ contains
   !> A = D M^-1 of the edge xs(2, nen) (start, end, mid), with dGamma =
   !> |dx/dxi| dxi, times 2 pi r when axisymmetric. A(1:nen, 1:nen) is set,
   !> the rest zero. A degenerate edge (M not positive definite: zero
-  !> length, r = 0 all along) gets the straight edge's closed form.
+  !> length, r = 0 all along) gets the straight edge's closed form. An
+  !> axisymmetric 3-node edge with a corner on the axis (r = 0) gives that
+  !> corner's row of A to the mid node's (see the module's header).
   pure subroutine dual_coefficients(nen, xs, axisymmetric, a)
     integer, intent(in) :: nen
     real(wp), intent(in) :: xs(2, 3)
     logical, intent(in) :: axisymmetric
     real(wp), intent(out) :: a(3, 3)
-    real(wp) :: m(3, 3), d(3), sh(3), dsh(3), p(2), t(2), dg, l(3, 3), y(3)
+    real(wp) :: m(3, 3), d(3), sh(3), dsh(3), p(2), t(2), dg, l(3, 3), y(3), rmax
     integer :: g, i, j, k
     logical :: ok
 
@@ -115,6 +133,18 @@ contains
       end do
       a(i, 1:nen) = y(1:nen)
     end do
+    ! A corner on the axis carries no ring: psi_mid <- psi_mid + psi_axis,
+    ! psi_axis <- 0 (doc/theory-contact-mortar.md section 9, "The axis").
+    ! The model holds the axis nodes at r = 0 exactly (u_r = 0).
+    if (axisymmetric .and. nen == 3) then
+      rmax = maxval(abs(xs(1, 1:3)))
+      do i = 1, 2
+        if (abs(xs(1, i)) <= AXIS_TOL*rmax) then
+          a(3, 1:3) = a(3, 1:3) + a(i, 1:3)
+          a(i, 1:3) = 0.0_wp
+        end if
+      end do
+    end if
   end subroutine dual_coefficients
 
   !> psi(1:nen) at a point where the edge's shape functions are sh(1:nen):

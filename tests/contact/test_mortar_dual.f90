@@ -9,6 +9,12 @@
 !> - the paper's Fig. 3 deck with mu = 0.5 (fine Q4, doc/reproduction.md):
 !>   the stick traction smooth from node to node (the measure of
 !>   test_paper_stick).
+!> - the axis of an axisymmetric model: a 3-node edge with a corner at
+!>   r = 0 gives that corner's psi to the mid node (raccord_mortar_dual),
+!>   and the finite-strain frictionless hollow ball as dual slave with
+!>   conditions = 'weighted' gives no energy at first contact (it gave
+!>   5.3e-2 of the energy scale by t = 0.046 while the corner's row came
+!>   and went with the sign of its ring weight).
 !> `test_mortar_dual full` (CTest `mortar_dual_full`, slow) adds the
 !> moderate Hertz mesh with both slaves, the paper's slave swap (Fig. 2(a),
 !> fine Q4), Fig. 3 with mu = 0.2 and the paper's Q8 deck (Fig. 4(a)).
@@ -17,7 +23,11 @@ program test_mortar_dual
   use raccord_check, only: failure_t, new_test, run_tests, check, check_close
   use raccord_error, only: error_t
   use raccord_scene, only: MULT_P1, MULT_DUAL
-  use raccord_scene_runner, only: scene_run_t, run_deck
+  use raccord_scene_runner, only: scene_run_t, run_deck, prepare_deck, step_predict, step_finish
+  use raccord_central_difference, only: advance_state
+  use raccord_contact_energy, only: contact_energy_watch_t, watch_contact_energy
+  use raccord_mortar_dual, only: dual_coefficients, dual_basis
+  use raccord_shape, only: shape_line
   use hertz_support, only: hertz_closed_form
   use mortar_profile_support, only: profile_t, profile_of_run, zero_crossing_half_width, interior_difference, &
     hertz_rms_error, stick_zigzag
@@ -32,7 +42,9 @@ program test_mortar_dual
   if (command_argument_count() == 0) then
     call run_tests('mortar_dual', [ &
       new_test('Hertz, coarse Q4, slave = block: dual against P1 and the closed form', test_hertz_coarse), &
-      new_test('Fig. 3, mu = 0.5: dual stick traction smooth', test_stick_050)])
+      new_test('Fig. 3, mu = 0.5: dual stick traction smooth', test_stick_050), &
+      new_test('axisymmetric Q8 edge with a corner on the axis: that psi goes to the mid node', test_axis_basis), &
+      new_test('finite-strain frictionless ball as dual slave, weighted: no energy at first contact', test_axis_ball)])
   else
     ! run_tests takes the argument as a filter on the names: 'full'.
     call run_tests('mortar_dual', [ &
@@ -232,6 +244,130 @@ contains
     call check(failure, abs(run%state%energy%balance) < 1.0e-10_wp*run%state%energy%scale, &
       deck // ': energy balance not exact')
   end subroutine test_q8
+
+  !> dual_coefficients on an axisymmetric 3-node edge from the axis (r = 0)
+  !> with its mid node off the centre, the axis corner as start and as end
+  !> (doc/theory-contact-mortar.md section 9, "The axis"). The corner's
+  !> ring weight D_axis = integral of N_axis 2 pi r dGamma is 0 with a
+  !> centred mid node and takes the sign of the offset otherwise (asserted:
+  !> both signs occur, the cause of the corner's row coming and going).
+  !> Asserted, by the 3-point rule A is built with: the axis corner's psi
+  !> is zero, sum psi = 1, integral of psi_i N_j = delta_ij D_j for the
+  !> other nodes, and the mid node's psi takes the corner's weight,
+  !> integral of psi_mid N_axis = D_axis.
+  subroutine test_axis_basis(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp), parameter :: gp(3) = [-0.774596669241483377_wp, 0.0_wp, 0.774596669241483377_wp]
+    real(wp), parameter :: gw(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
+    real(wp), parameter :: offset(2) = [0.03_wp, -0.03_wp]
+    real(wp) :: xs(2, 3), a(3, 3), e(3, 3), d(3), sh(3), dsh(3), psi(3), p(2), t(2), dg, worst, dax(2)
+    integer :: io, iax, g, i, j, ioth
+    worst = 0.0_wp
+    do iax = 1, 2
+      ioth = 3 - iax
+      do io = 1, 2
+        ! An edge of the hollow ball's pole (radius 1, 0.2 long), the mid
+        ! node moved along the edge by offset.
+        xs(:, iax) = [0.0_wp, 1.0_wp]
+        xs(:, ioth) = [0.2_wp, 0.98_wp]
+        xs(:, 3) = 0.5_wp*(xs(:, 1) + xs(:, 2)) + offset(io)*[1.0_wp, -0.1_wp]
+        call dual_coefficients(3, xs, .true., a)
+        call check(failure, all(a(iax, :) == 0.0_wp), 'the axis corner should have no psi')
+        e = 0.0_wp
+        d = 0.0_wp
+        do g = 1, 3
+          call shape_line(3, gp(g), sh, dsh)
+          call dual_basis(3, a, sh, psi)
+          worst = max(worst, abs(sum(psi) - 1.0_wp))
+          p = matmul(xs, sh)
+          t = matmul(xs, dsh)
+          dg = norm2(t)*gw(g)*2.0_wp*3.14159265358979324_wp*p(1)
+          do j = 1, 3
+            d(j) = d(j) + sh(j)*dg
+            do i = 1, 3
+              e(i, j) = e(i, j) + psi(i)*sh(j)*dg
+            end do
+          end do
+        end do
+        dax(io) = d(iax)
+        do j = 1, 3
+          do i = 1, 3
+            if (i == iax) cycle
+            if (j == iax) then
+              worst = max(worst, abs(e(i, j) - merge(d(iax), 0.0_wp, i == 3))/d(3))
+            else
+              worst = max(worst, abs(e(i, j) - merge(d(j), 0.0_wp, i == j))/d(j))
+            end if
+          end do
+        end do
+      end do
+      call check(failure, dax(1)*dax(2) < 0.0_wp, 'the axis corner''s ring weight should change sign with the offset')
+    end do
+    write(*, '(a,2es11.3,a,es10.3)') '        D_axis for mid-node offsets +-0.03: ', dax, &
+      '; max biorthogonality / partition error ', worst
+    call check(failure, worst <= 1.0e-13_wp, 'psi off the axis corner not biorthogonal, or sum psi /= 1')
+  end subroutine test_axis_basis
+
+  !> The finite-strain frictionless hollow ball (tests/axisymmetric/data/
+  !> ball_q8.inp: neo-Hooke ball, j2 plate, damped, the deck of
+  !> axi_finite_cases.sh without friction) with the ball as dual slave
+  !> and conditions = 'weighted', to t = 0.08 (first contact at t = 0.01;
+  !> the pole's corner gave 1.6e-4, 5.3e-2 of the then energy scale, in
+  !> single steps between t = 0.039 and 0.047 before the axis corner's
+  !> psi went to the mid node). Asserted: the energy contact
+  !> gives (the run's watch) stays below 1e-3 of the scale, every step's
+  !> multipliers converge, the energy balance closes (finite strain: 1e-3).
+  subroutine test_axis_ball(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    real(wp), parameter :: T_STOP = 0.08_wp
+    type(scene_run_t), allocatable :: run
+    type(contact_energy_watch_t) :: watch
+    type(error_t) :: err
+    character(len=512) :: root
+    character(len=:), allocatable :: path
+    real(wp) :: bal
+    integer :: u, length, stat
+    call get_environment_variable('RACCORD_SOURCE_DIR', root, length, stat)
+    path = './mortar_dual_axis_ball.nml'
+    open(newunit=u, file=path, status='replace', action='write')
+    write(u, '(a)') '&mesh file = ''' // trim(root) // '/tests/axisymmetric/data/ball_q8.inp'' /'
+    write(u, '(a)') '&body name = ''ball'', elset = ''ball'', young = 10.0, poisson = 0.45, density = 1.0e-3, ' // &
+      'hypothesis = ''axisymmetric'', kinematics = ''finite'', material = ''neo_hooke'' /'
+    write(u, '(a)') '&body name = ''plate'', elset = ''plate'', young = 200.0, poisson = 0.3, density = 1.0e-3, ' // &
+      'hypothesis = ''axisymmetric'', kinematics = ''finite'', material = ''j2'', yield_stress = 0.5 /'
+    write(u, '(a)') '&amplitude name = ''ramp'', time = 0.0, 0.15, value = 0.0, 1.0 /'
+    write(u, '(a)') '&boundary set = ''b_bottom'', type = ''fixed'', components = ''y'' /'
+    write(u, '(a)') '&boundary set = ''p_top'', type = ''displacement'', components = ''xy'', value = 0.0, -0.16, ' // &
+      'amplitude = ''ramp'' /'
+    write(u, '(a)') '&time t_end = 0.5, damping = 20.0 /'
+    write(u, '(a)') '&contact_pair slave = ''b_right'', master = ''p_bottom'', method = ''mortar'', ' // &
+      'multiplier = ''dual'', conditions = ''weighted'', friction = 0.0 /'
+    close(u)
+    allocate(run)
+    call prepare_deck(path, run, err)
+    call check(failure, .not. err%failed(), 'ball deck: set-up failed')
+    if (allocated(failure)) return
+    bal = 0.0_wp
+    do
+      call step_predict(run, err)
+      if (.not. err%failed()) call step_finish(run, err)
+      if (err%failed()) exit
+      call watch_contact_energy(run%pairs, run%state, watch)
+      bal = max(bal, abs(run%state%energy%balance)/run%state%energy%scale)
+      if (run%state%time >= T_STOP .or. run%state%step == run%state%nsteps) exit
+      call advance_state(run%state)
+    end do
+    call check(failure, .not. err%failed(), 'ball deck: run failed')
+    if (allocated(failure)) return
+    write(*, '(a,es10.3,a,f7.4,a,i0,a,es10.3)') '        finite frictionless ball, dual, weighted: largest energy ' // &
+      'given / scale ', watch%worst, ' (t = ', watch%worst_time, '), unconverged steps ', run%pairs(1)%failed_total, &
+      ', worst balance ', bal
+    call check(failure, watch%worst <= 1.0e-3_wp, 'contact gave the ball more than 1e-3 of the energy scale')
+    call check(failure, run%pairs(1)%failed_total == 0, 'unconverged multiplier steps')
+    ! Finite strain: the balance closes to 1e-3 of the scale (7.1e-4 with
+    ! P1 and with dual, from the finite-strain account, as axi_finite_runs).
+    call check(failure, bal < 1.0e-3_wp, 'energy balance off by more than 1e-3 of the scale')
+  end subroutine test_axis_ball
 
   subroutine test_stick_020(failure)
     type(failure_t), allocatable, intent(out) :: failure
