@@ -6,9 +6,12 @@
 !> or GENERATE ranges); *SURFACE, TYPE=ELEMENT with "elset-or-element, Sn"
 !> faces; *INCLUDE, INPUT=file (textual, relative to the including file).
 !> Other keywords are material, step or load data and are skipped: the
-!> scene deck gives those. Keywords, parameters and set names are
-!> case-insensitive, as in Abaqus; a set keeps the spelling of its first
-!> definition. A line ending with a comma continues on the next line.
+!> scene deck gives those. Keywords and parameters are case-insensitive;
+!> set and surface names are Abaqus labels (raccord_mesh's label_key):
+!> read without regard to case and blanks unless in double quotes, where
+!> they are taken as written, so "top" and top (the label TOP) are two
+!> sets; a set keeps the spelling of its first definition for messages.
+!> A line ending with a comma continues on the next line.
 !> Reference: Abaqus Keywords Reference Guide (input syntax rules) and the
 !> CalculiX CrunchiX user's manual, section 8 (input deck format).
 module raccord_abaqus_reader
@@ -16,7 +19,7 @@ module raccord_abaqus_reader
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info
   use raccord_strings, only: str, lower
-  use raccord_mesh, only: ELEM_Q4, ELEM_Q8
+  use raccord_mesh, only: ELEM_Q4, ELEM_Q8, label_key, unquoted_key
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
     split_fields, parse_int, parse_real
   use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
@@ -276,16 +279,12 @@ contains
           'use TYPE=ELEMENT with "element-or-elset, S1..S4" lines (or a *NSET for a node set)')
         return
       end if
-      k = find_draft_surface(d, name, .true.)
-      if (k > 0) then
-        if (case_clash(d%surfaces(k)%name, d%surfaces(k)%quoted, name, quoted)) then
-          call raise_error(err, EXIT_INPUT, clash_text(at // ': *SURFACE, NAME=', name, &
-            d%surfaces(k)%name, 'surface'))
-          return
-        end if
+      if (.not. label_ok(name, quoted)) then
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, NAME="' // name // &
+          '" is no label: give the surface a name of letters, digits or underscores')
+        return
       end if
-      call add_draft_surface(d, name, .true., st%surf)
-      d%surfaces(st%surf)%quoted = d%surfaces(st%surf)%quoted .or. quoted
+      call add_draft_surface(d, name, label_key(name, quoted), st%surf)
     case default
       st%block = BLK_SKIP
       if (index(', ' // lower(st%ignored) // ', ', ', ' // lower(st%keyword) // ', ') == 0) then
@@ -423,9 +422,9 @@ contains
         call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
         return
       end if
-      k = find_group(d%nsets, d%nnset, entry, .true.)
+      k = find_group(d%nsets, d%nnset, entry_key(entry))
       if (k == 0) then
-        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
+        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': ' // shown(entry) // ' in ' // st%keyword // &
           ' is neither a node id nor a node set defined above' // kind_note(d, entry, 'node') // &
           ': define the set with *NSET before this line')
         return
@@ -439,9 +438,9 @@ contains
         call add_member(d%esets(st%set), id, sl%ifile, sl%line)
         return
       end if
-      k = find_group(d%esets, d%neset, entry, .true.)
+      k = find_group(d%esets, d%neset, entry_key(entry))
       if (k == 0) then
-        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
+        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': ' // shown(entry) // ' in ' // st%keyword // &
           ' is neither an element id nor an element set defined above' // kind_note(d, entry, 'elem') // &
           ': define the set with *ELSET (or ELSET= on *ELEMENT) before this line')
         return
@@ -488,10 +487,10 @@ contains
       call add_edge_by_side(d%surfaces(st%surf), id, side, sl%ifile, sl%line)
       return
     end if
-    k = find_group(d%esets, d%neset, target, .true.)
+    k = find_group(d%esets, d%neset, entry_key(target))
     if (k == 0) then
       call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // d%surfaces(st%surf)%name // &
-        '" uses element set "' // target // '", which is undefined' // kind_note(d, target, 'elem') // &
+        '" uses element set ' // shown(target) // ', which is undefined' // kind_note(d, target, 'elem') // &
         ': define it with *ELSET (or ELSET= on *ELEMENT) before the surface, or correct the name')
       return
     end if
@@ -535,30 +534,39 @@ contains
   end function type_hint
 
   !> What else `name` is, when it is not a set of the kind wanted ('node' or
-  !> 'elem'): ' ("x" is an element set here)' or '' (raccord_mesh_names
-  !> does the same for the deck's names).
+  !> 'elem'): ' ("x" is an element set here)', or for a quoted name the
+  !> unquoted set of its letters ("disc_row" when the set is DISC_ROW), or
+  !> '' (raccord_mesh_names does the same for the deck's names).
   function kind_note(d, name, want) result(s)
     type(mesh_draft_t), intent(in) :: d
     character(len=*), intent(in) :: name, want
     character(len=:), allocatable :: s
+    character(len=:), allocatable :: key
+    integer :: k
     s = ''
     if (want == 'node') then
       if (d%neset > 0) then
-        if (find_group(d%esets, d%neset, name, .true.) > 0) s = ' ("' // name // '" is an element set here)'
+        if (find_group(d%esets, d%neset, entry_key(name)) > 0) s = ' (' // shown(name) // ' is an element set here)'
       end if
     else
       if (d%nnset > 0) then
-        if (find_group(d%nsets, d%nnset, name, .true.) > 0) s = ' ("' // name // '" is a node set here)'
+        if (find_group(d%nsets, d%nnset, entry_key(name)) > 0) s = ' (' // shown(name) // ' is a node set here)'
       end if
     end if
-    if (len(s) == 0 .and. find_draft_surface(d, name, .true.) > 0) s = ' ("' // name // '" is a surface here)'
+    if (len(s) == 0 .and. find_draft_surface(d, entry_key(name)) > 0) s = ' (' // shown(name) // ' is a surface here)'
+    ! a quoted name in another case than the unquoted set it may mean
+    key = entry_key(name)
+    if (len(s) > 0 .or. key == unquoted_key(key)) return
+    k = 0
+    if (want == 'node' .and. d%nnset > 0) k = find_group(d%nsets, d%nnset, unquoted_key(key))
+    if (want /= 'node' .and. d%neset > 0) k = find_group(d%esets, d%neset, unquoted_key(key))
+    if (k > 0) s = ' (in double quotes a label keeps its case; the set here is the unquoted label ' // &
+      unquoted_key(key) // ': write it without the quotes)'
   end function kind_note
 
-  !> Index of the set `name` (created empty when absent), names compared
-  !> without regard to case as Abaqus does for unquoted labels. Abaqus
-  !> keeps the case of a label in double quotes, so "Top" and TOP are two
-  !> sets there; raccord compares every name without regard to case
-  !> (doc/mesh-formats.md), so such a pair is refused rather than merged.
+  !> Index of the set of label `name` (label_key: its case ignored unless
+  !> it was quoted), created empty when absent. A name that is no label
+  !> (empty, or blanks only) is refused.
   subroutine add_named_group(groups, n, name, quoted, at, k, err)
     type(draft_group_t), allocatable, intent(inout) :: groups(:)
     integer, intent(inout) :: n
@@ -567,34 +575,50 @@ contains
     integer, intent(out) :: k
     type(error_t), intent(inout) :: err
     k = 0
-    if (allocated(groups)) k = find_group(groups, n, name, .true.)
-    if (k > 0) then
-      if (case_clash(groups(k)%name, groups(k)%quoted, name, quoted)) then
-        call raise_error(err, EXIT_INPUT, clash_text(at, name, groups(k)%name, 'set'))
-        k = 0
-        return
-      end if
+    if (.not. label_ok(name, quoted)) then
+      call raise_error(err, EXIT_INPUT, at // '"' // name // '" is no label: give the set a name of ' // &
+        'letters, digits or underscores')
+      return
     end if
-    call add_group(groups, n, name, .true., k)
-    groups(k)%quoted = groups(k)%quoted .or. quoted
+    call add_group(groups, n, name, label_key(name, quoted), k)
   end subroutine add_named_group
 
-  !> Two spellings of one name that Abaqus would read as two labels: they
-  !> differ in case and one of them was quoted.
-  pure logical function case_clash(old, old_quoted, new, new_quoted)
-    character(len=*), intent(in) :: old, new
-    logical, intent(in) :: old_quoted, new_quoted
-    case_clash = (old_quoted .or. new_quoted) .and. old /= new
-  end function case_clash
+  !> A label has a character other than blanks (quoted) or than blanks and
+  !> quotes (unquoted: Abaqus ignores its blanks).
+  pure logical function label_ok(name, quoted)
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: quoted
+    if (quoted) then
+      label_ok = len_trim(name) > 0
+    else
+      label_ok = verify(name, ' "' // achar(9)) > 0
+    end if
+  end function label_ok
 
-  function clash_text(at, name, old, what) result(s)
-    character(len=*), intent(in) :: at, name, old, what
+  !> The label an entry of a data line names: "x" in double quotes as
+  !> written, anything else as an unquoted label (label_key).
+  pure function entry_key(entry) result(key)
+    character(len=*), intent(in) :: entry
+    character(len=:), allocatable :: key
+    integer :: n
+    n = len_trim(entry)
+    key = label_key(entry(1:n), .false.)
+    if (n >= 2) then
+      if (entry(1:1) == '"' .and. entry(n:n) == '"') key = label_key(entry(2:n - 1), .true.)
+    end if
+  end function entry_key
+
+  !> An entry of a data line for a message: in double quotes, once.
+  pure function shown(entry) result(s)
+    character(len=*), intent(in) :: entry
     character(len=:), allocatable :: s
-    s = at // '"' // name // '": Abaqus keeps the case of a quoted label, so this is another ' // what // &
-      ' than "' // old // '" there, but raccord compares set and surface names without regard to case ' // &
-      '(doc/mesh-formats.md) and could not tell them apart; give the two ' // what // 's names that differ ' // &
-      'by more than case, or the same spelling if they are one ' // what
-  end function clash_text
+    integer :: n
+    n = len_trim(entry)
+    s = '"' // entry(1:n) // '"'
+    if (n >= 2) then
+      if (entry(1:1) == '"' .and. entry(n:n) == '"') s = entry(1:n)
+    end if
+  end function shown
 
   !> Value of parameter key (lower case) on a keyword line; quotes removed.
   subroutine get_param(text, f, l, nf, key, value, found, quoted)

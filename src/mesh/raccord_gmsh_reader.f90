@@ -503,7 +503,7 @@ contains
       end if
       do p = 1, size(phys)
         name = physical_name(st, 2, phys(p))
-        call add_group(d%esets, d%neset, name, .false., k)
+        call add_group(d%esets, d%neset, name, name, k)
         call add_member(d%esets(k), target_id, st%ifile, tf%line_no)
       end do
     case (GMSH_LINE2, GMSH_LINE3)
@@ -511,9 +511,9 @@ contains
       ends(1:size(nodes)) = nodes     ! Gmsh order: the two ends, then the middle
       do p = 1, size(phys)
         name = physical_name(st, 1, phys(p))
-        call add_draft_surface(d, name, .false., k)
+        call add_draft_surface(d, name, name, k)
         call add_edge_by_nodes(d%surfaces(k), ends, st%ifile, tf%line_no)
-        call add_group(d%nsets, d%nnset, name, .false., k)
+        call add_group(d%nsets, d%nnset, name, name, k)
         do a = 1, size(nodes)
           call add_member(d%nsets(k), nodes(a), st%ifile, tf%line_no)
         end do
@@ -521,7 +521,7 @@ contains
     case (GMSH_POINT)
       do p = 1, size(phys)
         name = physical_name(st, 0, phys(p))
-        call add_group(d%nsets, d%nnset, name, .false., k)
+        call add_group(d%nsets, d%nnset, name, name, k)
         call add_member(d%nsets(k), nodes(1), st%ifile, tf%line_no)
       end do
     end select

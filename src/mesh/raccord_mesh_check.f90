@@ -10,9 +10,9 @@ module raccord_mesh_check
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info, log_warn
-  use raccord_strings, only: str, lower
+  use raccord_strings, only: str
   use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key
-  use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, &
+  use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, case_kept, &
     nodes_per_element, side_nodes, element_name
   use raccord_mesh_draft, only: mesh_draft_t, where_text
   use raccord_mesh_quality, only: check_element_shape, SHAPE_OK, SHAPE_CLOCKWISE, DEGENERATE_RTOL
@@ -53,6 +53,8 @@ contains
     call build_node_sets(d, node_map, new_node, mesh, err)
     if (err%failed()) return
     call build_surfaces(d, node_map, elem_map, new_node, mesh, err)
+    if (err%failed()) return
+    if (d%format_name == 'abaqus') call distinct_spellings(mesh)
     mesh%axi_types = ''
     if (allocated(d%axi_types)) mesh%axi_types = d%axi_types
     mesh%ignore_case = d%format_name == 'abaqus'
@@ -338,6 +340,7 @@ contains
         end do
         call sort_unique(list, k)
         mesh%esets(s)%name = g%name
+        mesh%esets(s)%key = g%key
         mesh%esets(s)%elems = list(1:k)
         deallocate(list)
       end associate
@@ -373,6 +376,7 @@ contains
         if (k == 0 .and. g%n > 0) call log_warn(caller, 'node set "' // g%name // &
           '" is empty: none of its nodes belongs to a 2D element')
         mesh%nsets(s)%name = g%name
+        mesh%nsets(s)%key = g%key
         mesh%nsets(s)%nodes = list(1:k)
         deallocate(list)
       end associate
@@ -415,6 +419,7 @@ contains
     do j = 1, d%nsurf
       associate (ds => d%surfaces(j), surf => mesh%surfaces(j))
         surf%name = ds%name
+        surf%key = ds%key
         surf%nedge = ds%n
         allocate(surf%edge(3, ds%n), surf%elem(ds%n), surf%side(ds%n))
         nen_max = 2
@@ -496,29 +501,56 @@ contains
             nodes(k) = surf%edge(s, m)
           end do
         end do
-        call merge_node_set(mesh, ds%name, d%format_name == 'abaqus', nodes(1:k))
+        call merge_node_set(mesh, ds%name, ds%key, nodes(1:k))
         deallocate(nodes)
       end associate
     end do
   end subroutine build_surfaces
 
-  !> Add nodes to the node set called name, creating it when absent.
-  subroutine merge_node_set(mesh, name, ignore_case, nodes)
+  !> Two Abaqus sets of one kind may be spelt alike and still be two labels:
+  !> a quoted "top" and an unquoted top (the label TOP). The unquoted one
+  !> then goes by its label (TOP) in messages and output, so that no two
+  !> sets of a kind, nor two result grids, share a name.
+  subroutine distinct_spellings(mesh)
     type(mesh_t), intent(inout) :: mesh
-    character(len=*), intent(in) :: name
-    logical, intent(in) :: ignore_case
+    integer :: j, k
+    do j = 1, size(mesh%nsets)
+      do k = 1, size(mesh%nsets)
+        if (k == j .or. mesh%nsets(k)%name /= mesh%nsets(j)%name) cycle
+        if (case_kept(mesh%nsets(j)%key)) cycle
+        mesh%nsets(j)%name = mesh%nsets(j)%key
+      end do
+    end do
+    do j = 1, size(mesh%esets)
+      do k = 1, size(mesh%esets)
+        if (k == j .or. mesh%esets(k)%name /= mesh%esets(j)%name) cycle
+        if (case_kept(mesh%esets(j)%key)) cycle
+        mesh%esets(j)%name = mesh%esets(j)%key
+      end do
+    end do
+    do j = 1, size(mesh%surfaces)
+      do k = 1, size(mesh%surfaces)
+        if (k == j .or. mesh%surfaces(k)%name /= mesh%surfaces(j)%name) cycle
+        if (case_kept(mesh%surfaces(j)%key)) cycle
+        mesh%surfaces(j)%name = mesh%surfaces(j)%key
+      end do
+    end do
+  end subroutine distinct_spellings
+
+  !> Add nodes to the node set of label key, creating it (spelt name) when absent.
+  subroutine merge_node_set(mesh, name, key, nodes)
+    type(mesh_t), intent(inout) :: mesh
+    character(len=*), intent(in) :: name, key
     integer, intent(in) :: nodes(:)
     type(node_set_t), allocatable :: tmp(:)
     integer, allocatable :: list(:)
     integer :: k, s, n
     s = 0
     do k = 1, size(mesh%nsets)
-      if (ignore_case) then
-        if (lower(mesh%nsets(k)%name) == lower(name)) s = k
-      else
-        if (mesh%nsets(k)%name == name) s = k
+      if (mesh%nsets(k)%key == key) then
+        s = k
+        exit
       end if
-      if (s > 0) exit
     end do
     if (s == 0) then
       allocate(tmp(size(mesh%nsets) + 1))
@@ -526,6 +558,7 @@ contains
       call move_alloc(tmp, mesh%nsets)
       s = size(mesh%nsets)
       mesh%nsets(s)%name = name
+      mesh%nsets(s)%key = key
       allocate(mesh%nsets(s)%nodes(0))
     end if
     list = [mesh%nsets(s)%nodes, nodes]
