@@ -18,8 +18,9 @@ module raccord_abaqus_reader
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info
-  use raccord_strings, only: str, lower
+  use raccord_strings, only: str, lower, clipped
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, label_key, unquoted_key
+  use raccord_int_map, only: int_map_t
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
     split_fields, parse_int, parse_real
   use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
@@ -177,7 +178,7 @@ contains
     ! instance's translation and rotation, and number each part from 1;
     ! read flat, the geometry would be silently wrong. Refused.
     if (kw == 'part' .or. kw == 'instance' .or. kw == 'assembly') then
-      call raise_error(err, EXIT_INPUT, at // ': *' // sl%text(2:l(1)) // ': parts, instances and ' // &
+      call raise_error(err, EXIT_INPUT, at // ': *' // clip(sl%text(2:l(1))) // ': parts, instances and ' // &
         'assemblies are not read (instance transformations would be lost): write a flat input file ' // &
         '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
       return
@@ -206,7 +207,7 @@ contains
       return
     end if
 
-    st%keyword = '*' // trim(adjustl(sl%text(2:l(1))))
+    st%keyword = '*' // clip(trim(adjustl(sl%text(2:l(1)))))
     st%set = 0
     st%surf = 0
     st%generate = has_flag(sl%text, f, l, nf, 'generate')
@@ -215,7 +216,7 @@ contains
       call get_param(sl%text, f, l, nf, 'input', inc, found)
       if (found) then
         call raise_error(err, EXIT_INPUT, at // ': INPUT= on ' // st%keyword // ' is not supported: ' // &
-          'write the data lines after the keyword, or use *INCLUDE, INPUT=' // inc // ' on the next line')
+          'write the data lines after the keyword, or use *INCLUDE, INPUT=' // clip(inc) // ' on the next line')
         return
       end if
     end if
@@ -224,7 +225,7 @@ contains
     case ('node')
       st%block = BLK_NODE
       call get_param(sl%text, f, l, nf, 'nset', name, found, quoted)
-      if (found) call add_named_group(d%nsets, d%nnset, name, quoted, at // ': NSET=', st%set, err)
+      if (found) call add_named_group(d%nsets, d%nnset, d%nset_index, name, quoted, at // ': NSET=', st%set, err)
       if (err%failed()) return
     case ('element')
       st%block = BLK_ELEMENT
@@ -235,7 +236,7 @@ contains
       end if
       call element_type(lower(typ), st%etype, st%nen, found)
       if (.not. found) then
-        call raise_error(err, EXIT_INPUT, at // ': element TYPE=' // typ // ' is not supported; raccord ' // &
+        call raise_error(err, EXIT_INPUT, at // ': element TYPE=' // clip(typ) // ' is not supported; raccord ' // &
           'reads CPE4, CPS4, CAX4, CPE8, CPS8, CAX8 (and their R variants): ' // type_hint(lower(typ)))
         return
       end if
@@ -249,7 +250,7 @@ contains
         st%reduced = st%reduced // typ
       end if
       call get_param(sl%text, f, l, nf, 'elset', name, found, quoted)
-      if (found) call add_named_group(d%esets, d%neset, name, quoted, at // ': ELSET=', st%set, err)
+      if (found) call add_named_group(d%esets, d%neset, d%eset_index, name, quoted, at // ': ELSET=', st%set, err)
       if (err%failed()) return
     case ('nset', 'elset')
       call get_param(sl%text, f, l, nf, kw, name, found, quoted)
@@ -260,10 +261,12 @@ contains
       end if
       if (kw == 'nset') then
         st%block = BLK_NSET
-        call add_named_group(d%nsets, d%nnset, name, quoted, at // ': ' // st%keyword // ', NSET=', st%set, err)
+        call add_named_group(d%nsets, d%nnset, d%nset_index, name, quoted, at // ': ' // st%keyword // ', NSET=', &
+          st%set, err)
       else
         st%block = BLK_ELSET
-        call add_named_group(d%esets, d%neset, name, quoted, at // ': ' // st%keyword // ', ELSET=', st%set, err)
+        call add_named_group(d%esets, d%neset, d%eset_index, name, quoted, at // ': ' // st%keyword // ', ELSET=', &
+          st%set, err)
       end if
       if (err%failed()) return
     case ('surface')
@@ -275,12 +278,12 @@ contains
       end if
       call get_param(sl%text, f, l, nf, 'type', typ, found)
       if (found .and. lower(typ) /= 'element') then
-        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, TYPE=' // typ // ' is not supported: ' // &
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, TYPE=' // clip(typ) // ' is not supported: ' // &
           'use TYPE=ELEMENT with "element-or-elset, S1..S4" lines (or a *NSET for a node set)')
         return
       end if
       if (.not. label_ok(name, quoted)) then
-        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, NAME="' // name // &
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, NAME="' // clip(name) // &
           '" is no label: give the surface a name of letters, digits or underscores')
         return
       end if
@@ -422,7 +425,7 @@ contains
         call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
         return
       end if
-      k = find_group(d%nsets, d%nnset, entry_key(entry))
+      k = find_group(d%nsets, d%nnset, d%nset_index, entry_key(entry))
       if (k == 0) then
         call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': ' // shown(entry) // ' in ' // st%keyword // &
           ' is neither a node id nor a node set defined above' // kind_note(d, entry, 'node') // &
@@ -438,7 +441,7 @@ contains
         call add_member(d%esets(st%set), id, sl%ifile, sl%line)
         return
       end if
-      k = find_group(d%esets, d%neset, entry_key(entry))
+      k = find_group(d%esets, d%neset, d%eset_index, entry_key(entry))
       if (k == 0) then
         call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': ' // shown(entry) // ' in ' // st%keyword // &
           ' is neither an element id nor an element set defined above' // kind_note(d, entry, 'elem') // &
@@ -478,7 +481,7 @@ contains
     case ('s3'); side = 3
     case ('s4'); side = 4
     case default
-      call raise_error(err, EXIT_INPUT, at // ': face "' // sl%text(f(2):l(2)) // '" is not a side of a ' // &
+      call raise_error(err, EXIT_INPUT, at // ': face "' // clip(sl%text(f(2):l(2))) // '" is not a side of a ' // &
         'quadrilateral: use S1 (nodes 1-2), S2 (2-3), S3 (3-4) or S4 (4-1)')
       return
     end select
@@ -487,9 +490,9 @@ contains
       call add_edge_by_side(d%surfaces(st%surf), id, side, sl%ifile, sl%line)
       return
     end if
-    k = find_group(d%esets, d%neset, entry_key(target))
+    k = find_group(d%esets, d%neset, d%eset_index, entry_key(target))
     if (k == 0) then
-      call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // d%surfaces(st%surf)%name // &
+      call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // clip(d%surfaces(st%surf)%name) // &
         '" uses element set ' // shown(target) // ', which is undefined' // kind_note(d, target, 'elem') // &
         ': define it with *ELSET (or ELSET= on *ELEMENT) before the surface, or correct the name')
       return
@@ -546,11 +549,13 @@ contains
     s = ''
     if (want == 'node') then
       if (d%neset > 0) then
-        if (find_group(d%esets, d%neset, entry_key(name)) > 0) s = ' (' // shown(name) // ' is an element set here)'
+        if (find_group(d%esets, d%neset, d%eset_index, entry_key(name)) > 0) &
+          s = ' (' // shown(name) // ' is an element set here)'
       end if
     else
       if (d%nnset > 0) then
-        if (find_group(d%nsets, d%nnset, entry_key(name)) > 0) s = ' (' // shown(name) // ' is a node set here)'
+        if (find_group(d%nsets, d%nnset, d%nset_index, entry_key(name)) > 0) &
+          s = ' (' // shown(name) // ' is a node set here)'
       end if
     end if
     if (len(s) == 0 .and. find_draft_surface(d, entry_key(name)) > 0) s = ' (' // shown(name) // ' is a surface here)'
@@ -558,29 +563,30 @@ contains
     key = entry_key(name)
     if (len(s) > 0 .or. key == unquoted_key(key)) return
     k = 0
-    if (want == 'node' .and. d%nnset > 0) k = find_group(d%nsets, d%nnset, unquoted_key(key))
-    if (want /= 'node' .and. d%neset > 0) k = find_group(d%esets, d%neset, unquoted_key(key))
+    if (want == 'node' .and. d%nnset > 0) k = find_group(d%nsets, d%nnset, d%nset_index, unquoted_key(key))
+    if (want /= 'node' .and. d%neset > 0) k = find_group(d%esets, d%neset, d%eset_index, unquoted_key(key))
     if (k > 0) s = ' (in double quotes a label keeps its case; the set here is the unquoted label ' // &
-      unquoted_key(key) // ': write it without the quotes)'
+      clip(unquoted_key(key)) // ': write it without the quotes)'
   end function kind_note
 
   !> Index of the set of label `name` (label_key: its case ignored unless
   !> it was quoted), created empty when absent. A name that is no label
   !> (empty, or blanks only) is refused.
-  subroutine add_named_group(groups, n, name, quoted, at, k, err)
+  subroutine add_named_group(groups, n, index, name, quoted, at, k, err)
     type(draft_group_t), allocatable, intent(inout) :: groups(:)
     integer, intent(inout) :: n
+    type(int_map_t), intent(inout) :: index
     character(len=*), intent(in) :: name, at
     logical, intent(in) :: quoted
     integer, intent(out) :: k
     type(error_t), intent(inout) :: err
     k = 0
     if (.not. label_ok(name, quoted)) then
-      call raise_error(err, EXIT_INPUT, at // '"' // name // '" is no label: give the set a name of ' // &
+      call raise_error(err, EXIT_INPUT, at // '"' // clip(name) // '" is no label: give the set a name of ' // &
         'letters, digits or underscores')
       return
     end if
-    call add_group(groups, n, name, label_key(name, quoted), k)
+    call add_group(groups, n, index, name, label_key(name, quoted), k)
   end subroutine add_named_group
 
   !> A label has a character other than blanks (quoted) or than blanks and
@@ -614,11 +620,18 @@ contains
     character(len=:), allocatable :: s
     integer :: n
     n = len_trim(entry)
-    s = '"' // entry(1:n) // '"'
+    s = '"' // clip(entry(1:n)) // '"'
     if (n >= 2) then
-      if (entry(1:1) == '"' .and. entry(n:n) == '"') s = entry(1:n)
+      if (entry(1:1) == '"' .and. entry(n:n) == '"') s = '"' // clip(entry(2:n - 1)) // '"'
     end if
   end function shown
+
+  !> At most 60 characters of a text of the file, for a message.
+  pure function clip(s) result(r)
+    character(len=*), intent(in) :: s
+    character(len=:), allocatable :: r
+    r = clipped(s, 60)
+  end function clip
 
   !> Value of parameter key (lower case) on a keyword line; quotes removed.
   subroutine get_param(text, f, l, nf, key, value, found, quoted)
@@ -680,7 +693,7 @@ contains
     ok = .false.
     if (f(k) <= l(k)) call parse_int(sl%text(f(k):l(k)), value, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
-      ') is "' // sl%text(f(k):l(k)) // '", not an integer')
+      ') is "' // clip(sl%text(f(k):l(k))) // '", not an integer')
   end subroutine field_int
 
   subroutine field_real(sl, d, f, l, k, what, value, err)
@@ -696,6 +709,6 @@ contains
     ok = .false.
     if (f(k) <= l(k)) call parse_real(sl%text(f(k):l(k)), value, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
-      ') is "' // sl%text(f(k):l(k)) // '", not a number')
+      ') is "' // clip(sl%text(f(k):l(k))) // '", not a number')
   end subroutine field_real
 end module raccord_abaqus_reader

@@ -7,6 +7,7 @@
 module raccord_mesh_draft
   use raccord_kinds, only: wp
   use raccord_mesh, only: MAX_NEN
+  use raccord_int_map, only: int_map_t, map_insert, map_get, text_key
   use raccord_strings, only: str
   implicit none
   private
@@ -55,6 +56,9 @@ module raccord_mesh_draft
     integer, allocatable :: conn(:,:)                 !< (MAX_NEN, nelem) file node ids, 0-padded
     integer, allocatable :: elem_file(:), elem_line(:)
     integer :: nnset = 0, neset = 0, nsurf = 0
+    !> label -> index of nsets, esets, surfaces (text_key of the key), so a
+    !> file of many sets, or of many elements in groups, reads in O(n)
+    type(int_map_t) :: nset_index, eset_index, surf_index
     type(draft_group_t), allocatable :: nsets(:)
     type(draft_group_t), allocatable :: esets(:)
     type(draft_surface_t), allocatable :: surfaces(:)
@@ -143,12 +147,18 @@ contains
 
   !> Index of the group of label `key` among groups(1:n), or 0. The
   !> readers give the key: a Gmsh name as it is, an Abaqus label by
-  !> raccord_mesh's label_key (case ignored unless quoted).
-  pure integer function find_group(groups, n, key)
+  !> raccord_mesh's label_key (case ignored unless quoted). `index` maps
+  !> text_key(key) to the group; two labels of one text_key (rare) are
+  !> told apart by a scan.
+  pure integer function find_group(groups, n, index, key)
     type(draft_group_t), intent(in) :: groups(:)
     integer, intent(in) :: n
+    type(int_map_t), intent(in) :: index
     character(len=*), intent(in) :: key
     integer :: k
+    find_group = map_get(index, text_key(key))
+    if (find_group == 0) return
+    if (groups(find_group)%key == key) return
     find_group = 0
     do k = 1, n
       if (groups(k)%key /= key) cycle
@@ -158,14 +168,16 @@ contains
   end function find_group
 
   !> Index of the group of label `key`, created empty (spelt `name`) when absent.
-  subroutine add_group(groups, n, name, key, k)
+  subroutine add_group(groups, n, index, name, key, k)
     type(draft_group_t), allocatable, intent(inout) :: groups(:)
     integer, intent(inout) :: n
+    type(int_map_t), intent(inout) :: index
     character(len=*), intent(in) :: name, key
     integer, intent(out) :: k
     type(draft_group_t), allocatable :: tmp(:)
+    integer :: prev
     if (.not. allocated(groups)) allocate(groups(4))
-    k = find_group(groups, n, key)
+    k = find_group(groups, n, index, key)
     if (k > 0) return
     if (n == size(groups)) then
       allocate(tmp(2*n))
@@ -178,6 +190,7 @@ contains
     groups(k)%key = key
     groups(k)%n = 0
     allocate(groups(k)%id(16), groups(k)%file(16), groups(k)%line(16))
+    call map_insert(index, text_key(key), k, prev)
   end subroutine add_group
 
   subroutine add_member(g, id, ifile, line)
@@ -201,6 +214,9 @@ contains
     type(mesh_draft_t), intent(in) :: d
     character(len=*), intent(in) :: key
     integer :: k
+    find_draft_surface = map_get(d%surf_index, text_key(key))
+    if (find_draft_surface == 0) return
+    if (d%surfaces(find_draft_surface)%key == key) return
     find_draft_surface = 0
     do k = 1, d%nsurf
       if (d%surfaces(k)%key /= key) cycle
@@ -215,6 +231,7 @@ contains
     character(len=*), intent(in) :: name, key
     integer, intent(out) :: k
     type(draft_surface_t), allocatable :: tmp(:)
+    integer :: prev
     if (.not. allocated(d%surfaces)) allocate(d%surfaces(4))
     k = find_draft_surface(d, key)
     if (k > 0) return
@@ -230,6 +247,7 @@ contains
     d%surfaces(k)%n = 0
     allocate(d%surfaces(k)%node(3, 16), d%surfaces(k)%elem(16), d%surfaces(k)%side(16), &
       d%surfaces(k)%file(16), d%surfaces(k)%line(16))
+    call map_insert(d%surf_index, text_key(key), k, prev)
   end subroutine add_draft_surface
 
   !> Edge given by its file node ids (start, end, mid or 0), Gmsh line element.

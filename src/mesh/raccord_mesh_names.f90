@@ -6,7 +6,7 @@
 !> MAX_LISTED (a quoted Abaqus label in its double quotes). Lookups themselves are raccord_mesh's
 !> find_* (doc/mesh-formats.md, "Set and surface names").
 module raccord_mesh_names
-  use raccord_strings, only: str, lower
+  use raccord_strings, only: str, lower, clipped
   use raccord_mesh, only: mesh_t, find_node_set, find_elem_set, find_surface, case_kept, unquoted_key
   implicit none
   private
@@ -169,10 +169,10 @@ contains
       character(len=*), intent(in) :: found, what
       character(len=:), allocatable :: h
       if (mesh%ignore_case) then
-        h = ' (Abaqus keeps the case of a label in double quotes: the mesh has "' // found // '", ' // what // &
-          '; write it in the deck in that case, ''' // found // ''')'
+        h = ' (Abaqus keeps the case of a label in double quotes: the mesh has "' // clipped(found, 60) // '", ' // &
+          what // '; write it in the deck in that case, ''' // clipped(found, 60) // ''')'
       else
-        h = ' (Gmsh names are case-sensitive: the mesh has ''' // found // ''', ' // what // &
+        h = ' (Gmsh names are case-sensitive: the mesh has ''' // clipped(found, 60) // ''', ' // what // &
           '; write the name as the mesh spells it)'
       end if
     end function hint
@@ -227,7 +227,7 @@ contains
     character(len=:), allocatable, intent(in) :: name, key
     character(len=:), allocatable :: s
     s = ''
-    if (allocated(name)) s = name
+    if (allocated(name)) s = clipped(name, 60)
     if (.not. mesh%ignore_case .or. .not. allocated(key)) return
     if (case_kept(key)) s = '"' // s // '"'
   end function listed

@@ -34,13 +34,29 @@ contains
     type(error_t), intent(inout) :: err
     integer :: ios
     character(len=512) :: msg
-    logical :: exists, busy
+    logical :: exists, busy, folder
+    integer(i8) :: nbytes
     tf%path = path
     tf%line_no = 0
     inquire(file=path, exist=exists)
     if (.not. exists) then
       call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" does not exist: check the path ' // &
         '(relative paths are taken from the scene deck''s folder)')
+      return
+    end if
+    ! A folder, a pipe (FIFO) or a device (/dev/zero) is no mesh file: a
+    ! pipe without a writer would block the open for ever, a device read
+    ! without end. A folder's '.' exists; the others (and an empty file)
+    ! have size 0, so they are refused before they are opened.
+    inquire(file=path // '/.', exist=folder)
+    if (folder) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is a folder: give the mesh file in it')
+      return
+    end if
+    inquire(file=path, size=nbytes)
+    if (nbytes == 0) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is empty (0 bytes), or is a pipe or ' // &
+        'device, which raccord does not read: give a mesh file (Gmsh .msh or Abaqus .inp)')
       return
     end if
     ! A file this process is reading already (an Abaqus *INCLUDE cycle):
