@@ -15,6 +15,9 @@
 #   manysets tens of thousands of Abaqus sets and surfaces (quoted and
 #            unquoted) or Gmsh physical names: must run within the time
 #            limit (set lookups were O(n^2): 60000 *NSET ran for minutes) valid
+#   clobber  the deck or mesh named like one of the run's files in the
+#            output folder (plate.log with -o .): refused before anything
+#            is written (the log replaced the deck); a near name runs  2, valid
 
 # ---------------------------------------------------------------- special
 # special_case NAME NOTE WHAT: WHAT is mkfifo, zero, null or folder; the
@@ -112,3 +115,35 @@ new_case manysets.plate_q8.msh.physnames manysets valid 0 "60000 more (unused) p
 d=$(seed_pair plate_q8.msh)
 edit_lines "$c/plate_q8.msh" '/^\$PhysicalNames/ { print; getline; print $1 + 60000; for (i = 0; i < 60000; i++) printf "1 %d \"x%d\"\n", 1000 + i, i; next } { print }'
 set_args -o out "$d"
+
+# ---------------------------------------------------------------- clobber
+# An input with the name of one of the run's output files, in the output
+# folder: refused before anything is written (the deck plate.log run with
+# -o . was replaced by the run's log).
+new_case clobber.deck-log clobber bad 2 "the deck plate.log run with -o ."
+cp "$seeds/plate.msh" "$c/"
+cp "$seeds/plate.nml" "$c/plate.log"
+set_args -o . plate.log
+set_names "would be overwritten"
+for m in plate.lock plate.scene.nml plate.h5.part plate.contact2.incomplete.txt; do
+  new_case "clobber.mesh-$m" clobber bad 2 "plate.nml's mesh named $m, run with -o ."
+  d=$(seed_pair plate.nml)
+  mv "$c/plate.msh" "$c/$m"
+  set_key "$c/plate.nml" file "'$m'"
+  set_key "$c/plate.nml" format "'gmsh'"
+  set_args -o . "$d"
+  set_names "would be overwritten"
+done
+new_case clobber.mesh-subfolder clobber bad 2 "the mesh out/../out/plate.lock, run with -o ./out/"
+d=$(seed_pair plate.nml)
+mkdir "$c/out"
+mv "$c/plate.msh" "$c/out/plate.lock"
+set_key "$c/plate.nml" file "'out/../out/plate.lock'"
+set_key "$c/plate.nml" format "'gmsh'"
+set_args -o ./out/ "$d"
+set_names "would be overwritten"
+new_case clobber.mesh-other-name clobber valid 0 "the mesh plate.history.msh (no output has that name), run with -o ."
+d=$(seed_pair plate.nml)
+mv "$c/plate.msh" "$c/plate.history.msh"
+set_key "$c/plate.nml" file "'plate.history.msh'"
+set_args -o . "$d"
