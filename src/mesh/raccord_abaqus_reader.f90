@@ -6,7 +6,8 @@
 !> or GENERATE ranges); *SURFACE, TYPE=ELEMENT with "elset-or-element, Sn"
 !> faces; *INCLUDE, INPUT=file (textual, relative to the including file).
 !> Other keywords are material, step or load data and are skipped: the
-!> scene deck gives those. Keywords and parameters are case-insensitive;
+!> scene deck gives those; a keyword cut short that would read as one of
+!> those above (*ELEM) is refused. Blanks on a keyword line are ignored. Keywords and parameters are case-insensitive;
 !> set and surface names are Abaqus labels (raccord_mesh's label_key):
 !> read without regard to case and blanks unless in double quotes, where
 !> they are taken as written, so "top" and top (the label TOP) are two
@@ -32,6 +33,9 @@ module raccord_abaqus_reader
 
   integer, parameter :: BLK_NONE = 0, BLK_SKIP = 1, BLK_NODE = 2, BLK_ELEMENT = 3, BLK_NSET = 4, &
     BLK_ELSET = 5, BLK_SURFACE = 6
+  !> The keywords whose data lines raccord reads (or follows), in full.
+  character(len=*), parameter :: MESH_KEYWORDS(6) = [character(len=7) :: 'node', 'element', 'nset', &
+    'elset', 'surface', 'include']
   !> *INCLUDE nesting beyond this is taken for a file including itself.
   integer, parameter :: MAX_INCLUDE_DEPTH = 10
   character(len=*), parameter :: caller = 'read_abaqus'
@@ -171,7 +175,9 @@ contains
     logical :: found, quoted
 
     call split_fields(sl%text, ',', f, l, nf)
-    kw = lower(trim(adjustl(sl%text(2:l(1)))))
+    ! blanks on a keyword line are ignored (Abaqus, "Input syntax rules"):
+    ! *N SET is *NSET
+    kw = lower(unquoted_key(sl%text(2:l(1))))
     at = loc_text(d, sl)
 
     ! Parts and instances (Abaqus/CAE's default) place each part by its
@@ -289,6 +295,17 @@ contains
       end if
       call add_draft_surface(d, name, label_key(name, quoted), st%surf)
     case default
+      ! Abaqus takes a keyword cut short (*ELEM for *ELEMENT) when no other
+      ! keyword starts so; skipped here, its data lines would be lost
+      ! unnoticed: refused, naming the keyword in full
+      do k = 1, size(MESH_KEYWORDS)
+        if (len(kw) < 3 .or. len(kw) >= len_trim(MESH_KEYWORDS(k))) cycle
+        if (kw /= MESH_KEYWORDS(k)(1:len(kw))) cycle
+        call raise_error(err, EXIT_INPUT, at // ': *' // clip(trim(adjustl(sl%text(2:l(1))))) // &
+          ' reads as *' // unquoted_key(MESH_KEYWORDS(k)) // ' cut short; raccord reads keywords in full: ' // &
+          'write *' // unquoted_key(MESH_KEYWORDS(k)))
+        return
+      end do
       st%block = BLK_SKIP
       if (index(', ' // lower(st%ignored) // ', ', ', ' // lower(st%keyword) // ', ') == 0) then
         if (len(st%ignored) > 0) st%ignored = st%ignored // ', '

@@ -15,6 +15,9 @@
 #   manysets tens of thousands of Abaqus sets and surfaces (quoted and
 #            unquoted) or Gmsh physical names: must run within the time
 #            limit (set lookups were O(n^2): 60000 *NSET ran for minutes) valid
+#   inpkw    Abaqus keywords cut short (*ELEM, *NSE, *SURF: Abaqus takes
+#            them, raccord skipped them with their data): refused; blanks
+#            inside a keyword (*N SET) are ignored, as in Abaqus     2, valid
 #   clobber  the deck or mesh named like one of the run's files in the
 #            output folder (plate.log with -o .): refused before anything
 #            is written (the log replaced the deck); a near name runs  2, valid
@@ -147,3 +150,17 @@ d=$(seed_pair plate.nml)
 mv "$c/plate.msh" "$c/plate.history.msh"
 set_key "$c/plate.nml" file "'plate.history.msh'"
 set_args -o . "$d"
+
+# ---------------------------------------------------------------- inpkw
+for k in "ELEMENT, TYPE=CPS4, ELSET=plate:ELEM:ELEMENT" "NSET, NSET=left:NSE:NSET" "SURFACE, NAME=top:SURF:SURFACE"; do
+  full=${k%%:*}; rest=${k#*:}; short=${rest%%:*}; word=${rest#*:}
+  new_case "inpkw.plate.inp.$short" inpkw bad 2 "plate.inp: *$full written *$short${full#"$word"}"
+  d=$(seed_pair plate.inp)
+  edit_lines "$c/plate.inp" -v a="*$full" -v b="*$short${full#"$word"}" 'index($0, a) == 1 && !done { $0 = b substr($0, length(a) + 1); done = 1 } { print }'
+  set_args -o out "$d"
+  set_names "write *$word"
+done
+new_case inpkw.plate.inp.blank-inside inpkw valid 0 "plate.inp: *NSET written *N SET (blanks ignored)"
+d=$(seed_pair plate.inp)
+edit_lines "$c/plate.inp" '/^\*NSET, NSET=left/ { sub(/^\*NSET/, "*N SET") } { print }'
+set_args -o out "$d"
