@@ -169,6 +169,12 @@ contains
     if (len(line) > 0) then
       if (line(len(line):len(line)) == achar(13)) line = line(1:len(line)-1)
     end if
+    ! a UTF-8 byte-order mark that an editor put before the first line, as
+    ! the deck reader drops it (it made "$MeshFormat" read as another word)
+    if (tf%line_no == 1 .and. len(line) >= 3) then
+      if (iachar(line(1:1)) == 239 .and. iachar(line(2:2)) == 187 .and. iachar(line(3:3)) == 191) &
+        line = line(4:)
+    end if
   end subroutine read_line
 
   !> Split a line into fields at any of the separator characters; runs of

@@ -18,6 +18,9 @@
 #   inpkw    Abaqus keywords cut short (*ELEM, *NSE, *SURF: Abaqus takes
 #            them, raccord skipped them with their data): refused; blanks
 #            inside a keyword (*N SET) are ignored, as in Abaqus     2, valid
+#   bom      a UTF-8 byte-order mark before the first line of a mesh (as
+#            the deck accepts one): read as without (the Gmsh reader did
+#            not find $MeshFormat, the Abaqus one saw a data line)    valid
 #   clobber  the deck or mesh named like one of the run's files in the
 #            output folder (plate.log with -o .): refused before anything
 #            is written (the log replaced the deck); a near name runs  2, valid
@@ -164,3 +167,11 @@ new_case inpkw.plate.inp.blank-inside inpkw valid 0 "plate.inp: *NSET written *N
 d=$(seed_pair plate.inp)
 edit_lines "$c/plate.inp" '/^\*NSET, NSET=left/ { sub(/^\*NSET/, "*N SET") } { print }'
 set_args -o out "$d"
+
+# ---------------------------------------------------------------- bom
+for m in plate.msh plate.inp plate_q8.msh contact.msh; do
+  new_case "bom.$m" bom valid 0 "$m with a UTF-8 byte-order mark"
+  d=$(seed_pair "$m")
+  { printf '\357\273\277'; cat "$seeds/$m"; } > "$c/$m"
+  set_args -o out "$d"
+done
