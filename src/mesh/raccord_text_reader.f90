@@ -175,6 +175,13 @@ contains
       if (iachar(line(1:1)) == 239 .and. iachar(line(2:2)) == 187 .and. iachar(line(3:3)) == 191) &
         line = line(4:)
     end if
+    ! A NUL byte is in no text file: a binary file (an .h5 given to
+    ! *INCLUDE) had its lines skipped as data of a skipped keyword.
+    if (index(line, achar(0)) > 0) then
+      call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no) // ': a NUL byte: this is a binary ' // &
+        'file, not a mesh text file (Gmsh .msh ASCII or Abaqus .inp)')
+      eof = .true.
+    end if
   end subroutine read_line
 
   !> Split a line into fields at any of the separator characters; runs of

@@ -18,6 +18,9 @@
 #   inpkw    Abaqus keywords cut short (*ELEM, *NSE, *SURF: Abaqus takes
 #            them, raccord skipped them with their data): refused; blanks
 #            inside a keyword (*N SET) are ignored, as in Abaqus     2, valid
+#   binary   a binary file (an HDF5 result) given to *INCLUDE: refused at
+#            its first NUL byte (its lines were skipped as data of the
+#            last keyword, exit 0)                                        2
 #   bom      a UTF-8 byte-order mark before the first line of a mesh (as
 #            the deck accepts one): read as without (the Gmsh reader did
 #            not find $MeshFormat, the Abaqus one saw a data line)    valid
@@ -175,3 +178,17 @@ for m in plate.msh plate.inp plate_q8.msh contact.msh; do
   { printf '\357\273\277'; cat "$seeds/$m"; } > "$c/$m"
   set_args -o out "$d"
 done
+
+# ---------------------------------------------------------------- binary
+new_case binary.plate.inp.include-h5 binary bad 2 "plate.inp includes x.inp, bytes of an HDF5 file"
+d=$(seed_pair plate.inp)
+echo "*INCLUDE, INPUT=x.inp" >> "$c/plate.inp"
+{ printf '\211HDF\r\n\032\n\000\000\000\000'; head -c 300 /dev/zero; printf 'tail\n'; } > "$c/x.inp"
+set_args -o out "$d"
+set_names "NUL byte"
+new_case binary.plate.msh.nul-in-node binary bad 2 "plate.msh with a NUL byte in a node line"
+d=$(seed_pair plate.msh)
+l=$(awk '$0 == "10 0 0" { print NR; exit }' "$seeds/plate.msh")
+{ head -n "$((l - 1))" "$seeds/plate.msh"; printf '10 0\000 0\n'; tail -n "+$((l + 1))" "$seeds/plate.msh"; } > "$c/plate.msh"
+set_args -o out "$d"
+set_names "NUL byte"
