@@ -70,6 +70,17 @@ if command -v mkfifo > /dev/null 2>&1; then
 fi
 
 # ---------------------------------------------------------------- longtext
+# A regular file of one line longer than the readers take (10^6 characters).
+new_case longtext.deck-endless-line longtext bad 2 "the deck: 1100000 NUL-free characters and no end of line"
+cp "$seeds/plate.msh" "$c/"
+head -c 1100000 /dev/zero | tr '\000' 'a' > "$c/d.nml"
+set_args -o out d.nml
+set_names "longer than"
+new_case longtext.mesh-endless-line longtext bad 2 "plate.msh: 1100000 characters and no end of line"
+d=$(seed_pair plate.msh)
+head -c 1100000 /dev/zero | tr '\000' 'a' > "$c/plate.msh"
+set_args -o out "$d"
+set_names "longer than"
 long=$(awk 'BEGIN { for (i = 0; i < 100000; i++) printf "a" }')
 new_case longtext.plate.nml.key longtext bad 2 "&run with a key of 100000 characters"
 d=$(seed_pair plate.nml)
