@@ -500,12 +500,21 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: where, fmt, version
     integer :: hdferr, fv
+    integer(i8) :: nbytes
     file = -1
     if (err%failed()) return
     where = 'checkpoint "' // path // '"'
     if (.not. file_exists(path)) then
       call raise_error(err, EXIT_INPUT, 'no ' // where // '; give the <stem>.checkpoint.h5 a stopped run wrote ' // &
         '(a .part file is an unfinished checkpoint and cannot be used)')
+      return
+    end if
+    ! a pipe (FIFO) would block HDF5's open for ever; it has size 0, as a
+    ! device or an empty file has
+    inquire(file=path, size=nbytes)
+    if (nbytes == 0) then
+      call raise_error(err, EXIT_INPUT, where // ' is empty (0 bytes), or is a pipe or device: give the ' // &
+        '<stem>.checkpoint.h5 a stopped run wrote, or run the scene afresh without --restart')
       return
     end if
     call h5_acquire(err)

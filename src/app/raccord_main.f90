@@ -23,7 +23,7 @@ program raccord_main
   use raccord_cli, only: cli_t, parse_command_line, usage_text
   use raccord_scene, only: scene_t
   use raccord_deck, only: read_scene, write_scene
-  use raccord_paths, only: path_dir, path_base, absolute_path
+  use raccord_paths, only: path_dir, path_base, absolute_path, normal_path
   use raccord_mesh, only: mesh_t
   use raccord_mesh_io, only: read_mesh
   use raccord_model, only: model_t
@@ -124,6 +124,8 @@ program raccord_main
   if (allocated(cli%output_dir)) scene%run%output_dir = cli%output_dir
   if (restart) call place_restart()
   stem = run_stem(scene)
+  call keep_inputs(scene%path, 'scene deck')
+  call keep_inputs(scene%mesh%file, 'mesh file')
   if (.not. cli%check) call open_run_folder()
 
   ! Phase 2: the mesh; phase 3: the discrete model (paper section 3: bodies,
@@ -324,6 +326,46 @@ contains
     flush(output_unit)
     call c_exit(int(EXIT_WALLCLOCK, c_int))
   end subroutine stop_at_checkpoint
+
+  !> An input file that the run would write over (the deck plate.log
+  !> beside -o .: the log replaced it) is refused before anything is
+  !> written: its folder is the output folder and its name is one of the
+  !> run's files, <stem>.log, .lock, .h5, .xmf, .meshio.xmf, .history.txt,
+  !> .scene.nml, .checkpoint.h5 or .contact<k>.txt, complete, .part or
+  !> .incomplete (doc/output-format.md).
+  subroutine keep_inputs(path, what)
+    character(len=*), intent(in) :: path, what
+    character(len=*), parameter :: outputs(8) = [character(len=13) :: 'log', 'lock', 'h5', 'xmf', &
+      'meshio.xmf', 'history.txt', 'scene.nml', 'checkpoint.h5']
+    character(len=:), allocatable :: base, rest
+    integer :: k
+    logical :: clash
+    if (len_trim(path) == 0) return
+    if (normal_path(path_dir(path)) /= normal_path(path_dir(stem))) return
+    base = path_base(stem) // '.'
+    rest = path_base(path)
+    if (len(rest) <= len(base)) return
+    if (rest(1:len(base)) /= base) return
+    rest = rest(len(base) + 1:)
+    ! the .part and .incomplete forms of a file
+    if (len(rest) > 5) then
+      if (rest(len(rest) - 4:) == '.part') rest = rest(1:len(rest) - 5)
+    end if
+    k = index(rest, 'incomplete.')
+    if (k > 0) rest = rest(1:k - 1) // rest(k + 11:)
+    k = index(rest, '.incomplete')
+    if (k > 0) rest = rest(1:k - 1) // rest(k + 11:)
+    clash = any(outputs == rest)
+    if (.not. clash .and. len(rest) > 11) then
+      if (rest(1:7) == 'contact' .and. rest(len(rest) - 3:) == '.txt') &
+        clash = verify(rest(8:len(rest) - 4), '0123456789') == 0
+    end if
+    if (.not. clash) return
+    call raise_error(err, EXIT_INPUT, 'the ' // what // ' ' // path // ' has the name of a file this run ' // &
+      'writes into ' // path_dir(stem) // ' (' // path_base(stem) // '.*, doc/output-format.md) and would be ' // &
+      'overwritten: rename it, or write the results elsewhere with -o DIR')
+    call finish(err)
+  end subroutine keep_inputs
 
   !> Create the output folder and open the log file in it (a restart
   !> appends to the log of the run it continues).

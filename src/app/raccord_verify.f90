@@ -34,12 +34,21 @@ contains
     type(error_t), intent(inout) :: err
     integer(hid_t) :: file
     integer :: hdferr, ndata, version
+    integer(i8) :: nbytes
     character(len=:), allocatable :: where, fmt, extra
     type(error_t) :: cerr
     report = ''
     where = '"' // path // '"'
     if (.not. file_exists(path)) then
       call raise_error(err, EXIT_INPUT, 'no file ' // where // ' to verify')
+      return
+    end if
+    ! a pipe (FIFO) would block HDF5's open for ever; it has size 0, as a
+    ! device or an empty file has
+    inquire(file=path, size=nbytes)
+    if (nbytes == 0) then
+      call raise_error(err, EXIT_INPUT, where // ' is empty (0 bytes), or is a pipe or device: not a raccord ' // &
+        '.h5 or .checkpoint.h5 file')
       return
     end if
     call h5_acquire(err)

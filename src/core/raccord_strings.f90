@@ -5,7 +5,7 @@ module raccord_strings
   implicit none
   private
 
-  public :: str, lower, starts_with, ends_with
+  public :: str, lower, starts_with, ends_with, clipped
 
   !> Convert a number to its shortest readable text.
   interface str
@@ -131,4 +131,18 @@ contains
     if (len(s) < len(suffix)) return
     ends_with = s(len(s)-len(suffix)+1:) == suffix
   end function ends_with
+
+  !> A text of the input quoted in a message, cut to at most n characters
+  !> (n >= 4) with "..." and its full length, so that a value or name of a
+  !> hundred thousand characters does not make the message as long.
+  pure function clipped(s, n) result(r)
+    character(len=*), intent(in) :: s
+    integer, intent(in) :: n
+    character(len=:), allocatable :: r
+    if (len_trim(s) > n) then
+      r = s(1:n - 3) // '... (' // str_int(len_trim(s)) // ' characters)'
+    else
+      r = trim(s)
+    end if
+  end function clipped
 end module raccord_strings

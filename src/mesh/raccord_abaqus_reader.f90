@@ -6,17 +6,22 @@
 !> or GENERATE ranges); *SURFACE, TYPE=ELEMENT with "elset-or-element, Sn"
 !> faces; *INCLUDE, INPUT=file (textual, relative to the including file).
 !> Other keywords are material, step or load data and are skipped: the
-!> scene deck gives those. Keywords, parameters and set names are
-!> case-insensitive, as in Abaqus; a set keeps the spelling of its first
-!> definition. A line ending with a comma continues on the next line.
+!> scene deck gives those; a keyword cut short that would read as one of
+!> those above (*ELEM) is refused. Blanks on a keyword line are ignored. Keywords and parameters are case-insensitive;
+!> set and surface names are Abaqus labels (raccord_mesh's label_key):
+!> read without regard to case and blanks unless in double quotes, where
+!> they are taken as written, so "top" and top (the label TOP) are two
+!> sets; a set keeps the spelling of its first definition for messages.
+!> A line ending with a comma continues on the next line.
 !> Reference: Abaqus Keywords Reference Guide (input syntax rules) and the
 !> CalculiX CrunchiX user's manual, section 8 (input deck format).
 module raccord_abaqus_reader
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info
-  use raccord_strings, only: str, lower
-  use raccord_mesh, only: ELEM_Q4, ELEM_Q8
+  use raccord_strings, only: str, lower, clipped
+  use raccord_mesh, only: ELEM_Q4, ELEM_Q8, label_key, unquoted_key
+  use raccord_int_map, only: int_map_t
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
     split_fields, parse_int, parse_real
   use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
@@ -28,6 +33,9 @@ module raccord_abaqus_reader
 
   integer, parameter :: BLK_NONE = 0, BLK_SKIP = 1, BLK_NODE = 2, BLK_ELEMENT = 3, BLK_NSET = 4, &
     BLK_ELSET = 5, BLK_SURFACE = 6
+  !> The keywords whose data lines raccord reads (or follows), in full.
+  character(len=*), parameter :: MESH_KEYWORDS(6) = [character(len=7) :: 'node', 'element', 'nset', &
+    'elset', 'surface', 'include']
   !> *INCLUDE nesting beyond this is taken for a file including itself.
   integer, parameter :: MAX_INCLUDE_DEPTH = 10
   character(len=*), parameter :: caller = 'read_abaqus'
@@ -167,14 +175,16 @@ contains
     logical :: found, quoted
 
     call split_fields(sl%text, ',', f, l, nf)
-    kw = lower(trim(adjustl(sl%text(2:l(1)))))
+    ! blanks on a keyword line are ignored (Abaqus, "Input syntax rules"):
+    ! *N SET is *NSET
+    kw = lower(unquoted_key(sl%text(2:l(1))))
     at = loc_text(d, sl)
 
     ! Parts and instances (Abaqus/CAE's default) place each part by its
     ! instance's translation and rotation, and number each part from 1;
     ! read flat, the geometry would be silently wrong. Refused.
     if (kw == 'part' .or. kw == 'instance' .or. kw == 'assembly') then
-      call raise_error(err, EXIT_INPUT, at // ': *' // sl%text(2:l(1)) // ': parts, instances and ' // &
+      call raise_error(err, EXIT_INPUT, at // ': *' // clip(sl%text(2:l(1))) // ': parts, instances and ' // &
         'assemblies are not read (instance transformations would be lost): write a flat input file ' // &
         '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
       return
@@ -203,7 +213,7 @@ contains
       return
     end if
 
-    st%keyword = '*' // trim(adjustl(sl%text(2:l(1))))
+    st%keyword = '*' // clip(trim(adjustl(sl%text(2:l(1)))))
     st%set = 0
     st%surf = 0
     st%generate = has_flag(sl%text, f, l, nf, 'generate')
@@ -212,7 +222,7 @@ contains
       call get_param(sl%text, f, l, nf, 'input', inc, found)
       if (found) then
         call raise_error(err, EXIT_INPUT, at // ': INPUT= on ' // st%keyword // ' is not supported: ' // &
-          'write the data lines after the keyword, or use *INCLUDE, INPUT=' // inc // ' on the next line')
+          'write the data lines after the keyword, or use *INCLUDE, INPUT=' // clip(inc) // ' on the next line')
         return
       end if
     end if
@@ -221,7 +231,7 @@ contains
     case ('node')
       st%block = BLK_NODE
       call get_param(sl%text, f, l, nf, 'nset', name, found, quoted)
-      if (found) call add_named_group(d%nsets, d%nnset, name, quoted, at // ': NSET=', st%set, err)
+      if (found) call add_named_group(d%nsets, d%nnset, d%nset_index, name, quoted, at // ': NSET=', st%set, err)
       if (err%failed()) return
     case ('element')
       st%block = BLK_ELEMENT
@@ -232,7 +242,7 @@ contains
       end if
       call element_type(lower(typ), st%etype, st%nen, found)
       if (.not. found) then
-        call raise_error(err, EXIT_INPUT, at // ': element TYPE=' // typ // ' is not supported; raccord ' // &
+        call raise_error(err, EXIT_INPUT, at // ': element TYPE=' // clip(typ) // ' is not supported; raccord ' // &
           'reads CPE4, CPS4, CAX4, CPE8, CPS8, CAX8 (and their R variants): ' // type_hint(lower(typ)))
         return
       end if
@@ -246,7 +256,7 @@ contains
         st%reduced = st%reduced // typ
       end if
       call get_param(sl%text, f, l, nf, 'elset', name, found, quoted)
-      if (found) call add_named_group(d%esets, d%neset, name, quoted, at // ': ELSET=', st%set, err)
+      if (found) call add_named_group(d%esets, d%neset, d%eset_index, name, quoted, at // ': ELSET=', st%set, err)
       if (err%failed()) return
     case ('nset', 'elset')
       call get_param(sl%text, f, l, nf, kw, name, found, quoted)
@@ -257,10 +267,12 @@ contains
       end if
       if (kw == 'nset') then
         st%block = BLK_NSET
-        call add_named_group(d%nsets, d%nnset, name, quoted, at // ': ' // st%keyword // ', NSET=', st%set, err)
+        call add_named_group(d%nsets, d%nnset, d%nset_index, name, quoted, at // ': ' // st%keyword // ', NSET=', &
+          st%set, err)
       else
         st%block = BLK_ELSET
-        call add_named_group(d%esets, d%neset, name, quoted, at // ': ' // st%keyword // ', ELSET=', st%set, err)
+        call add_named_group(d%esets, d%neset, d%eset_index, name, quoted, at // ': ' // st%keyword // ', ELSET=', &
+          st%set, err)
       end if
       if (err%failed()) return
     case ('surface')
@@ -272,21 +284,28 @@ contains
       end if
       call get_param(sl%text, f, l, nf, 'type', typ, found)
       if (found .and. lower(typ) /= 'element') then
-        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, TYPE=' // typ // ' is not supported: ' // &
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, TYPE=' // clip(typ) // ' is not supported: ' // &
           'use TYPE=ELEMENT with "element-or-elset, S1..S4" lines (or a *NSET for a node set)')
         return
       end if
-      k = find_draft_surface(d, name, .true.)
-      if (k > 0) then
-        if (case_clash(d%surfaces(k)%name, d%surfaces(k)%quoted, name, quoted)) then
-          call raise_error(err, EXIT_INPUT, clash_text(at // ': *SURFACE, NAME=', name, &
-            d%surfaces(k)%name, 'surface'))
-          return
-        end if
+      if (.not. label_ok(name, quoted)) then
+        call raise_error(err, EXIT_INPUT, at // ': *SURFACE, NAME="' // clip(name) // &
+          '" is no label: give the surface a name of letters, digits or underscores')
+        return
       end if
-      call add_draft_surface(d, name, .true., st%surf)
-      d%surfaces(st%surf)%quoted = d%surfaces(st%surf)%quoted .or. quoted
+      call add_draft_surface(d, name, label_key(name, quoted), st%surf)
     case default
+      ! Abaqus takes a keyword cut short (*ELEM for *ELEMENT) when no other
+      ! keyword starts so; skipped here, its data lines would be lost
+      ! unnoticed: refused, naming the keyword in full
+      do k = 1, size(MESH_KEYWORDS)
+        if (len(kw) < 3 .or. len(kw) >= len_trim(MESH_KEYWORDS(k))) cycle
+        if (kw /= MESH_KEYWORDS(k)(1:len(kw))) cycle
+        call raise_error(err, EXIT_INPUT, at // ': *' // clip(trim(adjustl(sl%text(2:l(1))))) // &
+          ' reads as *' // unquoted_key(MESH_KEYWORDS(k)) // ' cut short; raccord reads keywords in full: ' // &
+          'write *' // unquoted_key(MESH_KEYWORDS(k)))
+        return
+      end do
       st%block = BLK_SKIP
       if (index(', ' // lower(st%ignored) // ', ', ', ' // lower(st%keyword) // ', ') == 0) then
         if (len(st%ignored) > 0) st%ignored = st%ignored // ', '
@@ -423,9 +442,9 @@ contains
         call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
         return
       end if
-      k = find_group(d%nsets, d%nnset, entry, .true.)
+      k = find_group(d%nsets, d%nnset, d%nset_index, entry_key(entry))
       if (k == 0) then
-        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
+        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': ' // shown(entry) // ' in ' // st%keyword // &
           ' is neither a node id nor a node set defined above' // kind_note(d, entry, 'node') // &
           ': define the set with *NSET before this line')
         return
@@ -439,9 +458,9 @@ contains
         call add_member(d%esets(st%set), id, sl%ifile, sl%line)
         return
       end if
-      k = find_group(d%esets, d%neset, entry, .true.)
+      k = find_group(d%esets, d%neset, d%eset_index, entry_key(entry))
       if (k == 0) then
-        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': "' // entry // '" in ' // st%keyword // &
+        call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': ' // shown(entry) // ' in ' // st%keyword // &
           ' is neither an element id nor an element set defined above' // kind_note(d, entry, 'elem') // &
           ': define the set with *ELSET (or ELSET= on *ELEMENT) before this line')
         return
@@ -479,7 +498,7 @@ contains
     case ('s3'); side = 3
     case ('s4'); side = 4
     case default
-      call raise_error(err, EXIT_INPUT, at // ': face "' // sl%text(f(2):l(2)) // '" is not a side of a ' // &
+      call raise_error(err, EXIT_INPUT, at // ': face "' // clip(sl%text(f(2):l(2))) // '" is not a side of a ' // &
         'quadrilateral: use S1 (nodes 1-2), S2 (2-3), S3 (3-4) or S4 (4-1)')
       return
     end select
@@ -488,10 +507,10 @@ contains
       call add_edge_by_side(d%surfaces(st%surf), id, side, sl%ifile, sl%line)
       return
     end if
-    k = find_group(d%esets, d%neset, target, .true.)
+    k = find_group(d%esets, d%neset, d%eset_index, entry_key(target))
     if (k == 0) then
-      call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // d%surfaces(st%surf)%name // &
-        '" uses element set "' // target // '", which is undefined' // kind_note(d, target, 'elem') // &
+      call raise_error(err, EXIT_INPUT, at // ': *SURFACE "' // clip(d%surfaces(st%surf)%name) // &
+        '" uses element set ' // shown(target) // ', which is undefined' // kind_note(d, target, 'elem') // &
         ': define it with *ELSET (or ELSET= on *ELEMENT) before the surface, or correct the name')
       return
     end if
@@ -535,66 +554,101 @@ contains
   end function type_hint
 
   !> What else `name` is, when it is not a set of the kind wanted ('node' or
-  !> 'elem'): ' ("x" is an element set here)' or '' (raccord_mesh_names
-  !> does the same for the deck's names).
+  !> 'elem'): ' ("x" is an element set here)', or for a quoted name the
+  !> unquoted set of its letters ("disc_row" when the set is DISC_ROW), or
+  !> '' (raccord_mesh_names does the same for the deck's names).
   function kind_note(d, name, want) result(s)
     type(mesh_draft_t), intent(in) :: d
     character(len=*), intent(in) :: name, want
     character(len=:), allocatable :: s
+    character(len=:), allocatable :: key
+    integer :: k
     s = ''
     if (want == 'node') then
       if (d%neset > 0) then
-        if (find_group(d%esets, d%neset, name, .true.) > 0) s = ' ("' // name // '" is an element set here)'
+        if (find_group(d%esets, d%neset, d%eset_index, entry_key(name)) > 0) &
+          s = ' (' // shown(name) // ' is an element set here)'
       end if
     else
       if (d%nnset > 0) then
-        if (find_group(d%nsets, d%nnset, name, .true.) > 0) s = ' ("' // name // '" is a node set here)'
+        if (find_group(d%nsets, d%nnset, d%nset_index, entry_key(name)) > 0) &
+          s = ' (' // shown(name) // ' is a node set here)'
       end if
     end if
-    if (len(s) == 0 .and. find_draft_surface(d, name, .true.) > 0) s = ' ("' // name // '" is a surface here)'
+    if (len(s) == 0 .and. find_draft_surface(d, entry_key(name)) > 0) s = ' (' // shown(name) // ' is a surface here)'
+    ! a quoted name in another case than the unquoted set it may mean
+    key = entry_key(name)
+    if (len(s) > 0 .or. key == unquoted_key(key)) return
+    k = 0
+    if (want == 'node' .and. d%nnset > 0) k = find_group(d%nsets, d%nnset, d%nset_index, unquoted_key(key))
+    if (want /= 'node' .and. d%neset > 0) k = find_group(d%esets, d%neset, d%eset_index, unquoted_key(key))
+    if (k > 0) s = ' (in double quotes a label keeps its case; the set here is the unquoted label ' // &
+      clip(unquoted_key(key)) // ': write it without the quotes)'
   end function kind_note
 
-  !> Index of the set `name` (created empty when absent), names compared
-  !> without regard to case as Abaqus does for unquoted labels. Abaqus
-  !> keeps the case of a label in double quotes, so "Top" and TOP are two
-  !> sets there; raccord compares every name without regard to case
-  !> (doc/mesh-formats.md), so such a pair is refused rather than merged.
-  subroutine add_named_group(groups, n, name, quoted, at, k, err)
+  !> Index of the set of label `name` (label_key: its case ignored unless
+  !> it was quoted), created empty when absent. A name that is no label
+  !> (empty, or blanks only) is refused.
+  subroutine add_named_group(groups, n, index, name, quoted, at, k, err)
     type(draft_group_t), allocatable, intent(inout) :: groups(:)
     integer, intent(inout) :: n
+    type(int_map_t), intent(inout) :: index
     character(len=*), intent(in) :: name, at
     logical, intent(in) :: quoted
     integer, intent(out) :: k
     type(error_t), intent(inout) :: err
     k = 0
-    if (allocated(groups)) k = find_group(groups, n, name, .true.)
-    if (k > 0) then
-      if (case_clash(groups(k)%name, groups(k)%quoted, name, quoted)) then
-        call raise_error(err, EXIT_INPUT, clash_text(at, name, groups(k)%name, 'set'))
-        k = 0
-        return
-      end if
+    if (.not. label_ok(name, quoted)) then
+      call raise_error(err, EXIT_INPUT, at // '"' // clip(name) // '" is no label: give the set a name of ' // &
+        'letters, digits or underscores')
+      return
     end if
-    call add_group(groups, n, name, .true., k)
-    groups(k)%quoted = groups(k)%quoted .or. quoted
+    call add_group(groups, n, index, name, label_key(name, quoted), k)
   end subroutine add_named_group
 
-  !> Two spellings of one name that Abaqus would read as two labels: they
-  !> differ in case and one of them was quoted.
-  pure logical function case_clash(old, old_quoted, new, new_quoted)
-    character(len=*), intent(in) :: old, new
-    logical, intent(in) :: old_quoted, new_quoted
-    case_clash = (old_quoted .or. new_quoted) .and. old /= new
-  end function case_clash
+  !> A label has a character other than blanks (quoted) or than blanks and
+  !> quotes (unquoted: Abaqus ignores its blanks).
+  pure logical function label_ok(name, quoted)
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: quoted
+    if (quoted) then
+      label_ok = len_trim(name) > 0
+    else
+      label_ok = verify(name, ' "' // achar(9)) > 0
+    end if
+  end function label_ok
 
-  function clash_text(at, name, old, what) result(s)
-    character(len=*), intent(in) :: at, name, old, what
+  !> The label an entry of a data line names: "x" in double quotes as
+  !> written, anything else as an unquoted label (label_key).
+  pure function entry_key(entry) result(key)
+    character(len=*), intent(in) :: entry
+    character(len=:), allocatable :: key
+    integer :: n
+    n = len_trim(entry)
+    key = label_key(entry(1:n), .false.)
+    if (n >= 2) then
+      if (entry(1:1) == '"' .and. entry(n:n) == '"') key = label_key(entry(2:n - 1), .true.)
+    end if
+  end function entry_key
+
+  !> An entry of a data line for a message: in double quotes, once.
+  pure function shown(entry) result(s)
+    character(len=*), intent(in) :: entry
     character(len=:), allocatable :: s
-    s = at // '"' // name // '": Abaqus keeps the case of a quoted label, so this is another ' // what // &
-      ' than "' // old // '" there, but raccord compares set and surface names without regard to case ' // &
-      '(doc/mesh-formats.md) and could not tell them apart; give the two ' // what // 's names that differ ' // &
-      'by more than case, or the same spelling if they are one ' // what
-  end function clash_text
+    integer :: n
+    n = len_trim(entry)
+    s = '"' // clip(entry(1:n)) // '"'
+    if (n >= 2) then
+      if (entry(1:1) == '"' .and. entry(n:n) == '"') s = '"' // clip(entry(2:n - 1)) // '"'
+    end if
+  end function shown
+
+  !> At most 60 characters of a text of the file, for a message.
+  pure function clip(s) result(r)
+    character(len=*), intent(in) :: s
+    character(len=:), allocatable :: r
+    r = clipped(s, 60)
+  end function clip
 
   !> Value of parameter key (lower case) on a keyword line; quotes removed.
   subroutine get_param(text, f, l, nf, key, value, found, quoted)
@@ -656,7 +710,7 @@ contains
     ok = .false.
     if (f(k) <= l(k)) call parse_int(sl%text(f(k):l(k)), value, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
-      ') is "' // sl%text(f(k):l(k)) // '", not an integer')
+      ') is "' // clip(sl%text(f(k):l(k))) // '", not an integer')
   end subroutine field_int
 
   subroutine field_real(sl, d, f, l, k, what, value, err)
@@ -672,6 +726,6 @@ contains
     ok = .false.
     if (f(k) <= l(k)) call parse_real(sl%text(f(k):l(k)), value, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
-      ') is "' // sl%text(f(k):l(k)) // '", not a number')
+      ') is "' // clip(sl%text(f(k):l(k))) // '", not a number')
   end subroutine field_real
 end module raccord_abaqus_reader

@@ -16,7 +16,7 @@ module raccord_gmsh_reader
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8
-  use raccord_int_map, only: int_map_t, map_init, map_insert, pair_key
+  use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key, text_key
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, here, &
     split_fields, parse_int, parse_real, check_count
   use raccord_mesh_draft, only: mesh_draft_t, add_file, add_node, add_element, add_group, add_member, &
@@ -37,6 +37,10 @@ module raccord_gmsh_reader
     integer :: nname = 0
     integer, allocatable :: name_dim(:), name_tag(:)
     type(name_holder_t), allocatable :: names(:)
+    !> (dim, tag) -> entry of names (tag_key), and per dimension the name
+    !> -> entry (text_key): each element finds its groups' names, and each
+    !> line is checked against the others, in O(1), not O(names)
+    type(int_map_t) :: tag_index, name_index(0:2)
     ! $Entities (4.1): physical tags of entity (dim, tag), stored as a flat
     ! list of (dim, entity, physical) triples; entities are few.
     integer :: nent = 0
@@ -176,11 +180,15 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: line
     integer, allocatable :: f(:), l(:)
-    integer :: nf, n, k, j, dim, tag, q1, q2
+    integer :: nf, n, k, j, dim, tag, q1, q2, prev
     call read_count(tf, 'PhysicalNames', 'the number of names', n, err)
     if (err%failed()) return
     deallocate(st%name_dim, st%name_tag, st%names)
     allocate(st%name_dim(n), st%name_tag(n), st%names(n))
+    call map_init(st%tag_index, n)
+    do j = 0, 2
+      call map_init(st%name_index(j), n)
+    end do
     do k = 1, n
       call next_data_line(tf, 'PhysicalNames', 'name', k, n, line, f, l, nf, err)
       if (err%failed()) return
@@ -210,21 +218,26 @@ contains
       st%name_dim(k) = dim
       st%name_tag(k) = tag
       st%names(k)%s = line(q1 + 1:q2 - 1)
-      do j = 1, k - 1
-        if (st%name_dim(j) /= dim) cycle
-        if (st%name_tag(j) == tag) then
+      j = map_get(st%tag_index, tag_key(dim, tag))
+      if (j > 0) then
+        if (st%name_dim(j) == dim .and. st%name_tag(j) == tag) then
           call raise_error(err, EXIT_INPUT, here(tf) // ': physical group ' // str(tag) // ' of dimension ' // &
-            str(dim) // ' is named a second time ("' // st%names(j)%s // '" and "' // st%names(k)%s // &
+            str(dim) // ' is named a second time ("' // clip(st%names(j)%s) // '" and "' // clip(st%names(k)%s) // &
             '"); keep one line per group')
           return
         end if
+      end if
+      call map_insert(st%tag_index, tag_key(dim, tag), k, prev)
+      j = map_get(st%name_index(dim), text_key(st%names(k)%s))
+      if (j > 0) then
         if (st%names(j)%s == st%names(k)%s) then
-          call raise_error(err, EXIT_INPUT, here(tf) // ': the name "' // st%names(k)%s // '" is given to ' // &
+          call raise_error(err, EXIT_INPUT, here(tf) // ': the name "' // clip(st%names(k)%s) // '" is given to ' // &
             'two physical groups of dimension ' // str(dim) // ' (tags ' // str(st%name_tag(j)) // ' and ' // &
             str(tag) // '); a set name must be unique: rename one, or put both in one group')
           return
         end if
-      end do
+      end if
+      call map_insert(st%name_index(dim), text_key(st%names(k)%s), k, prev)
     end do
     st%nname = n
     call expect_end(tf, 'PhysicalNames', err)
@@ -503,7 +516,7 @@ contains
       end if
       do p = 1, size(phys)
         name = physical_name(st, 2, phys(p))
-        call add_group(d%esets, d%neset, name, .false., k)
+        call add_group(d%esets, d%neset, d%eset_index, name, name, k)
         call add_member(d%esets(k), target_id, st%ifile, tf%line_no)
       end do
     case (GMSH_LINE2, GMSH_LINE3)
@@ -511,9 +524,9 @@ contains
       ends(1:size(nodes)) = nodes     ! Gmsh order: the two ends, then the middle
       do p = 1, size(phys)
         name = physical_name(st, 1, phys(p))
-        call add_draft_surface(d, name, .false., k)
+        call add_draft_surface(d, name, name, k)
         call add_edge_by_nodes(d%surfaces(k), ends, st%ifile, tf%line_no)
-        call add_group(d%nsets, d%nnset, name, .false., k)
+        call add_group(d%nsets, d%nnset, d%nset_index, name, name, k)
         do a = 1, size(nodes)
           call add_member(d%nsets(k), nodes(a), st%ifile, tf%line_no)
         end do
@@ -521,7 +534,7 @@ contains
     case (GMSH_POINT)
       do p = 1, size(phys)
         name = physical_name(st, 0, phys(p))
-        call add_group(d%nsets, d%nnset, name, .false., k)
+        call add_group(d%nsets, d%nnset, d%nset_index, name, name, k)
         call add_member(d%nsets(k), nodes(1), st%ifile, tf%line_no)
       end do
     end select
@@ -533,14 +546,19 @@ contains
     integer, intent(in) :: dim, tag
     character(len=:), allocatable :: name
     integer :: k
-    do k = 1, st%nname
-      if (st%name_dim(k) == dim .and. st%name_tag(k) == tag) then
-        name = st%names(k)%s
-        return
-      end if
-    end do
+    k = map_get(st%tag_index, tag_key(dim, tag))
+    if (k > 0 .and. k <= st%nname) then
+      name = st%names(k)%s
+      return
+    end if
     name = str(tag)
   end function physical_name
+
+  !> Map key of physical group (dim, tag), dim 0..2.
+  pure integer(i8) function tag_key(dim, tag)
+    integer, intent(in) :: dim, tag
+    tag_key = int(tag, i8)*4_i8 + int(dim, i8)
+  end function tag_key
 
   !> Nodes of the element types raccord reads; 0 for the others.
   pure integer function gmsh_nodes(gtype)

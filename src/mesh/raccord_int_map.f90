@@ -10,7 +10,7 @@ module raccord_int_map
   implicit none
   private
 
-  public :: map_init, map_insert, map_get, pair_key
+  public :: map_init, map_insert, map_get, pair_key, text_key
 
   !> Open-addressing table; capacity is a power of two.
   type, public :: int_map_t
@@ -71,6 +71,23 @@ contains
   end function pair_key
 
   !> Slot holding key, or the empty slot where it would go.
+  !> A key for a text (a set's label): two polynomial hashes modulo primes
+  !> below 2^31 side by side, so that different texts rarely share one;
+  !> users of the map compare the texts on a hit.
+  pure integer(i8) function text_key(s)
+    character(len=*), intent(in) :: s
+    integer(i8), parameter :: p1 = 2147483629_i8, p2 = 2147483587_i8
+    integer(i8) :: h1, h2
+    integer :: k
+    h1 = 7_i8
+    h2 = 11_i8
+    do k = 1, len(s)
+      h1 = mod(h1*131_i8 + int(iachar(s(k:k)), i8), p1)
+      h2 = mod(h2*257_i8 + int(iachar(s(k:k)), i8), p2)
+    end do
+    text_key = h1*2147483648_i8 + h2 + 1_i8
+  end function text_key
+
   pure integer function find_slot(map, key) result(slot)
     type(int_map_t), intent(in) :: map
     integer(i8), intent(in) :: key

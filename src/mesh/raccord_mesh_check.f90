@@ -10,9 +10,9 @@ module raccord_mesh_check
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_log, only: log_info, log_warn
-  use raccord_strings, only: str, lower
-  use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key
-  use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, &
+  use raccord_strings, only: str, clipped
+  use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key, text_key
+  use raccord_mesh, only: mesh_t, node_set_t, elem_set_t, surface_t, MAX_NEN, ELEM_Q4, ELEM_Q8, case_kept, &
     nodes_per_element, side_nodes, element_name
   use raccord_mesh_draft, only: mesh_draft_t, where_text
   use raccord_mesh_quality, only: check_element_shape, SHAPE_OK, SHAPE_CLOCKWISE, DEGENERATE_RTOL
@@ -53,6 +53,8 @@ contains
     call build_node_sets(d, node_map, new_node, mesh, err)
     if (err%failed()) return
     call build_surfaces(d, node_map, elem_map, new_node, mesh, err)
+    if (err%failed()) return
+    if (d%format_name == 'abaqus') call distinct_spellings(mesh)
     mesh%axi_types = ''
     if (allocated(d%axi_types)) mesh%axi_types = d%axi_types
     mesh%ignore_case = d%format_name == 'abaqus'
@@ -330,7 +332,8 @@ contains
           k = map_get(elem_map, int(g%id(m), i8))
           if (k == 0) then
             call raise_error(err, EXIT_INPUT, where_text(d, g%file(m), g%line(m)) // ': element set "' // &
-              g%name // '" lists element ' // str(g%id(m)) // ', which is not a defined 2D element: ' // &
+              clipped(g%name, 60) // '" lists element ' // str(g%id(m)) // &
+              ', which is not a defined 2D element: ' // &
               'define it or remove it from the set')
             return
           end if
@@ -338,6 +341,7 @@ contains
         end do
         call sort_unique(list, k)
         mesh%esets(s)%name = g%name
+        mesh%esets(s)%key = g%key
         mesh%esets(s)%elems = list(1:k)
         deallocate(list)
       end associate
@@ -361,7 +365,7 @@ contains
           k = map_get(node_map, int(g%id(m), i8))
           if (k == 0) then
             call raise_error(err, EXIT_INPUT, where_text(d, g%file(m), g%line(m)) // ': node set "' // &
-              g%name // '" lists node ' // str(g%id(m)) // ', which is not defined: ' // &
+              clipped(g%name, 60) // '" lists node ' // str(g%id(m)) // ', which is not defined: ' // &
               'define it or remove it from the set')
             return
           end if
@@ -370,9 +374,10 @@ contains
           list(n) = new_node(k)
         end do
         call sort_unique(list(1:n), k)
-        if (k == 0 .and. g%n > 0) call log_warn(caller, 'node set "' // g%name // &
+        if (k == 0 .and. g%n > 0) call log_warn(caller, 'node set "' // clipped(g%name, 60) // &
           '" is empty: none of its nodes belongs to a 2D element')
         mesh%nsets(s)%name = g%name
+        mesh%nsets(s)%key = g%key
         mesh%nsets(s)%nodes = list(1:k)
         deallocate(list)
       end associate
@@ -390,10 +395,10 @@ contains
     integer, intent(in) :: new_node(:)
     type(mesh_t), intent(inout) :: mesh
     type(error_t), intent(inout) :: err
-    type(int_map_t) :: side_map
+    type(int_map_t) :: side_map, nset_index
     logical, allocatable :: shared(:)
     integer, allocatable :: listed_by(:)
-    integer :: e, s, k, prev, j, m, e_par, s_par, ends(3), loc(3), nen_max
+    integer :: e, s, k, prev, j, m, e_par, s_par, ends(3), loc(3), nen_max, nset_used
     integer, allocatable :: nodes(:)
     character(len=:), allocatable :: at
 
@@ -412,15 +417,19 @@ contains
     ! one surface would carry its load twice.
     allocate(listed_by(4*mesh%nelem), source=0)
     allocate(mesh%surfaces(d%nsurf))
+    ! the node sets, with room for one per surface, and their labels' index
+    ! (many surfaces merge in O(n), not O(n^2))
+    call reserve_node_sets(mesh, d%nsurf, nset_index, nset_used)
     do j = 1, d%nsurf
       associate (ds => d%surfaces(j), surf => mesh%surfaces(j))
         surf%name = ds%name
+        surf%key = ds%key
         surf%nedge = ds%n
         allocate(surf%edge(3, ds%n), surf%elem(ds%n), surf%side(ds%n))
         nen_max = 2
         do m = 1, ds%n
           ends = 0
-          at = where_text(d, ds%file(m), ds%line(m)) // ': surface "' // ds%name // '"'
+          at = where_text(d, ds%file(m), ds%line(m)) // ': surface "' // clipped(ds%name, 60) // '"'
           if (ds%elem(m) /= 0) then
             ! given as element face (Abaqus)
             e_par = map_get(elem_map, int(ds%elem(m), i8))
@@ -484,7 +493,7 @@ contains
         end do
         surf%nen_edge = nen_max
         if (ds%n > 0 .and. count(surf%elem(1:ds%n) == -1) > 0) call log_info(caller, 'surface "' // &
-          ds%name // '" has ' // str(count(surf%elem(1:ds%n) == -1)) // &
+          clipped(ds%name, 60) // '" has ' // str(count(surf%elem(1:ds%n) == -1)) // &
           ' edge(s) inside the mesh (shared by two elements): usable as a node set only')
         ! the node set of the same name
         allocate(nodes(3*ds%n))
@@ -496,37 +505,108 @@ contains
             nodes(k) = surf%edge(s, m)
           end do
         end do
-        call merge_node_set(mesh, ds%name, d%format_name == 'abaqus', nodes(1:k))
+        call merge_node_set(mesh, nset_index, nset_used, ds%name, ds%key, nodes(1:k))
         deallocate(nodes)
       end associate
     end do
+    if (nset_used < size(mesh%nsets)) mesh%nsets = mesh%nsets(1:nset_used)
   end subroutine build_surfaces
 
-  !> Add nodes to the node set called name, creating it when absent.
-  subroutine merge_node_set(mesh, name, ignore_case, nodes)
+  !> Grow mesh%nsets by `extra` unused places (nset_used counts the used
+  !> ones) and index the labels of the sets it holds (text_key).
+  subroutine reserve_node_sets(mesh, extra, index, nset_used)
     type(mesh_t), intent(inout) :: mesh
-    character(len=*), intent(in) :: name
-    logical, intent(in) :: ignore_case
-    integer, intent(in) :: nodes(:)
+    integer, intent(in) :: extra
+    type(int_map_t), intent(out) :: index
+    integer, intent(out) :: nset_used
     type(node_set_t), allocatable :: tmp(:)
-    integer, allocatable :: list(:)
-    integer :: k, s, n
-    s = 0
-    do k = 1, size(mesh%nsets)
-      if (ignore_case) then
-        if (lower(mesh%nsets(k)%name) == lower(name)) s = k
-      else
-        if (mesh%nsets(k)%name == name) s = k
-      end if
-      if (s > 0) exit
+    integer :: k, prev
+    nset_used = size(mesh%nsets)
+    allocate(tmp(nset_used + extra))
+    do k = 1, nset_used
+      call move_alloc(mesh%nsets(k)%name, tmp(k)%name)
+      call move_alloc(mesh%nsets(k)%key, tmp(k)%key)
+      call move_alloc(mesh%nsets(k)%nodes, tmp(k)%nodes)
     end do
+    call move_alloc(tmp, mesh%nsets)
+    call map_init(index, nset_used + extra)
+    do k = 1, nset_used
+      call map_insert(index, text_key(mesh%nsets(k)%key), k, prev)
+    end do
+  end subroutine reserve_node_sets
+
+  !> Two Abaqus sets of one kind may be spelt alike and still be two labels:
+  !> a quoted "top" and an unquoted top (the label TOP). The unquoted one
+  !> then goes by its label (TOP) in messages and output, so that no two
+  !> sets of a kind, nor two result grids, share a name.
+  subroutine distinct_spellings(mesh)
+    type(mesh_t), intent(inout) :: mesh
+    type(int_map_t) :: kept
+    integer :: j, k, prev
+    ! for each kind, an index of the spellings of the quoted labels whose
+    ! case counts (text_key), then each other set checked against it: O(n)
+    call map_init(kept, size(mesh%nsets))
+    do j = 1, size(mesh%nsets)
+      if (case_kept(mesh%nsets(j)%key)) call map_insert(kept, text_key(mesh%nsets(j)%name), j, prev)
+    end do
+    do j = 1, size(mesh%nsets)
+      if (case_kept(mesh%nsets(j)%key)) cycle
+      k = map_get(kept, text_key(mesh%nsets(j)%name))
+      if (k == 0) cycle
+      if (mesh%nsets(k)%name == mesh%nsets(j)%name) mesh%nsets(j)%name = mesh%nsets(j)%key
+    end do
+    call map_init(kept, size(mesh%esets))
+    do j = 1, size(mesh%esets)
+      if (case_kept(mesh%esets(j)%key)) call map_insert(kept, text_key(mesh%esets(j)%name), j, prev)
+    end do
+    do j = 1, size(mesh%esets)
+      if (case_kept(mesh%esets(j)%key)) cycle
+      k = map_get(kept, text_key(mesh%esets(j)%name))
+      if (k == 0) cycle
+      if (mesh%esets(k)%name == mesh%esets(j)%name) mesh%esets(j)%name = mesh%esets(j)%key
+    end do
+    call map_init(kept, size(mesh%surfaces))
+    do j = 1, size(mesh%surfaces)
+      if (case_kept(mesh%surfaces(j)%key)) call map_insert(kept, text_key(mesh%surfaces(j)%name), j, prev)
+    end do
+    do j = 1, size(mesh%surfaces)
+      if (case_kept(mesh%surfaces(j)%key)) cycle
+      k = map_get(kept, text_key(mesh%surfaces(j)%name))
+      if (k == 0) cycle
+      if (mesh%surfaces(k)%name == mesh%surfaces(j)%name) mesh%surfaces(j)%name = mesh%surfaces(j)%key
+    end do
+  end subroutine distinct_spellings
+
+  !> Add nodes to the node set of label key, creating it (spelt name) in
+  !> the next place reserve_node_sets made when absent.
+  subroutine merge_node_set(mesh, index, nset_used, name, key, nodes)
+    type(mesh_t), intent(inout) :: mesh
+    type(int_map_t), intent(inout) :: index
+    integer, intent(inout) :: nset_used
+    character(len=*), intent(in) :: name, key
+    integer, intent(in) :: nodes(:)
+    integer, allocatable :: list(:)
+    integer :: k, s, n, prev
+    s = map_get(index, text_key(key))
+    if (s > 0) then
+      if (mesh%nsets(s)%key /= key) then
+        ! two labels of one text_key: scan
+        s = 0
+        do k = 1, nset_used
+          if (mesh%nsets(k)%key == key) then
+            s = k
+            exit
+          end if
+        end do
+      end if
+    end if
     if (s == 0) then
-      allocate(tmp(size(mesh%nsets) + 1))
-      tmp(1:size(mesh%nsets)) = mesh%nsets
-      call move_alloc(tmp, mesh%nsets)
-      s = size(mesh%nsets)
+      nset_used = nset_used + 1
+      s = nset_used
       mesh%nsets(s)%name = name
+      mesh%nsets(s)%key = key
       allocate(mesh%nsets(s)%nodes(0))
+      call map_insert(index, text_key(key), s, prev)
     end if
     list = [mesh%nsets(s)%nodes, nodes]
     call sort_unique(list, n)

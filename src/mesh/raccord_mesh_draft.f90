@@ -7,7 +7,8 @@
 module raccord_mesh_draft
   use raccord_kinds, only: wp
   use raccord_mesh, only: MAX_NEN
-  use raccord_strings, only: str, lower
+  use raccord_int_map, only: int_map_t, map_insert, map_get, text_key
+  use raccord_strings, only: str
   implicit none
   private
 
@@ -21,25 +22,25 @@ module raccord_mesh_draft
 
   !> Named list of file ids (node set or element set) with their origin.
   type, public :: draft_group_t
-    character(len=:), allocatable :: name
+    character(len=:), allocatable :: name      !< spelling of its first definition, for messages and output
+    character(len=:), allocatable :: key       !< the label the group is found by (raccord_mesh's label_key)
     integer :: n = 0
     integer, allocatable :: id(:)
     integer, allocatable :: file(:)        !< index in mesh_draft_t%files
     integer, allocatable :: line(:)
-    logical :: quoted = .false.            !< Abaqus: a spelling was given in double quotes (case kept)
   end type draft_group_t
 
   !> Named surface: edges given either by their nodes (Gmsh line elements)
   !> or by element and side (Abaqus *SURFACE faces).
   type, public :: draft_surface_t
-    character(len=:), allocatable :: name
+    character(len=:), allocatable :: name      !< spelling of its first definition
+    character(len=:), allocatable :: key       !< the label it is found by (label_key)
     integer :: n = 0
     integer, allocatable :: node(:,:)      !< (3, n) file node ids start, end, mid (0: none); 0 when by side
     integer, allocatable :: elem(:)        !< file element id when given by side, else 0
     integer, allocatable :: side(:)        !< side 1..4 when given by side, else 0
     integer, allocatable :: file(:)
     integer, allocatable :: line(:)
-    logical :: quoted = .false.            !< Abaqus: a spelling was given in double quotes (case kept)
   end type draft_surface_t
 
   type, public :: mesh_draft_t
@@ -55,6 +56,9 @@ module raccord_mesh_draft
     integer, allocatable :: conn(:,:)                 !< (MAX_NEN, nelem) file node ids, 0-padded
     integer, allocatable :: elem_file(:), elem_line(:)
     integer :: nnset = 0, neset = 0, nsurf = 0
+    !> label -> index of nsets, esets, surfaces (text_key of the key), so a
+    !> file of many sets, or of many elements in groups, reads in O(n)
+    type(int_map_t) :: nset_index, eset_index, surf_index
     type(draft_group_t), allocatable :: nsets(:)
     type(draft_group_t), allocatable :: esets(:)
     type(draft_surface_t), allocatable :: surfaces(:)
@@ -141,36 +145,39 @@ contains
     d%elem_line(d%nelem) = line
   end subroutine add_element
 
-  !> Index of the group with that name among groups(1:n), or 0. Abaqus
-  !> names are case-insensitive (ignore_case), Gmsh names are not.
-  pure integer function find_group(groups, n, name, ignore_case)
+  !> Index of the group of label `key` among groups(1:n), or 0. The
+  !> readers give the key: a Gmsh name as it is, an Abaqus label by
+  !> raccord_mesh's label_key (case ignored unless quoted). `index` maps
+  !> text_key(key) to the group; two labels of one text_key (rare) are
+  !> told apart by a scan.
+  pure integer function find_group(groups, n, index, key)
     type(draft_group_t), intent(in) :: groups(:)
     integer, intent(in) :: n
-    character(len=*), intent(in) :: name
-    logical, intent(in) :: ignore_case
+    type(int_map_t), intent(in) :: index
+    character(len=*), intent(in) :: key
     integer :: k
+    find_group = map_get(index, text_key(key))
+    if (find_group == 0) return
+    if (groups(find_group)%key == key) return
     find_group = 0
     do k = 1, n
-      if (ignore_case) then
-        if (lower(groups(k)%name) /= lower(name)) cycle
-      else
-        if (groups(k)%name /= name) cycle
-      end if
+      if (groups(k)%key /= key) cycle
       find_group = k
       return
     end do
   end function find_group
 
-  !> Index of the group with that name, created empty when absent.
-  subroutine add_group(groups, n, name, ignore_case, k)
+  !> Index of the group of label `key`, created empty (spelt `name`) when absent.
+  subroutine add_group(groups, n, index, name, key, k)
     type(draft_group_t), allocatable, intent(inout) :: groups(:)
     integer, intent(inout) :: n
-    character(len=*), intent(in) :: name
-    logical, intent(in) :: ignore_case
+    type(int_map_t), intent(inout) :: index
+    character(len=*), intent(in) :: name, key
     integer, intent(out) :: k
     type(draft_group_t), allocatable :: tmp(:)
+    integer :: prev
     if (.not. allocated(groups)) allocate(groups(4))
-    k = find_group(groups, n, name, ignore_case)
+    k = find_group(groups, n, index, key)
     if (k > 0) return
     if (n == size(groups)) then
       allocate(tmp(2*n))
@@ -180,8 +187,10 @@ contains
     n = n + 1
     k = n
     groups(k)%name = name
+    groups(k)%key = key
     groups(k)%n = 0
     allocate(groups(k)%id(16), groups(k)%file(16), groups(k)%line(16))
+    call map_insert(index, text_key(key), k, prev)
   end subroutine add_group
 
   subroutine add_member(g, id, ifile, line)
@@ -200,32 +209,31 @@ contains
     g%line(g%n) = line
   end subroutine add_member
 
-  pure integer function find_draft_surface(d, name, ignore_case)
+  !> Index of the surface of label `key` (as find_group), or 0.
+  pure integer function find_draft_surface(d, key)
     type(mesh_draft_t), intent(in) :: d
-    character(len=*), intent(in) :: name
-    logical, intent(in) :: ignore_case
+    character(len=*), intent(in) :: key
     integer :: k
+    find_draft_surface = map_get(d%surf_index, text_key(key))
+    if (find_draft_surface == 0) return
+    if (d%surfaces(find_draft_surface)%key == key) return
     find_draft_surface = 0
     do k = 1, d%nsurf
-      if (ignore_case) then
-        if (lower(d%surfaces(k)%name) /= lower(name)) cycle
-      else
-        if (d%surfaces(k)%name /= name) cycle
-      end if
+      if (d%surfaces(k)%key /= key) cycle
       find_draft_surface = k
       return
     end do
   end function find_draft_surface
 
-  !> Index of the surface with that name, created empty when absent.
-  subroutine add_draft_surface(d, name, ignore_case, k)
+  !> Index of the surface of label `key`, created empty (spelt `name`) when absent.
+  subroutine add_draft_surface(d, name, key, k)
     type(mesh_draft_t), intent(inout) :: d
-    character(len=*), intent(in) :: name
-    logical, intent(in) :: ignore_case
+    character(len=*), intent(in) :: name, key
     integer, intent(out) :: k
     type(draft_surface_t), allocatable :: tmp(:)
+    integer :: prev
     if (.not. allocated(d%surfaces)) allocate(d%surfaces(4))
-    k = find_draft_surface(d, name, ignore_case)
+    k = find_draft_surface(d, key)
     if (k > 0) return
     if (d%nsurf == size(d%surfaces)) then
       allocate(tmp(2*d%nsurf))
@@ -235,9 +243,11 @@ contains
     d%nsurf = d%nsurf + 1
     k = d%nsurf
     d%surfaces(k)%name = name
+    d%surfaces(k)%key = key
     d%surfaces(k)%n = 0
     allocate(d%surfaces(k)%node(3, 16), d%surfaces(k)%elem(16), d%surfaces(k)%side(16), &
       d%surfaces(k)%file(16), d%surfaces(k)%line(16))
+    call map_insert(d%surf_index, text_key(key), k, prev)
   end subroutine add_draft_surface
 
   !> Edge given by its file node ids (start, end, mid or 0), Gmsh line element.

@@ -1,12 +1,13 @@
 !> Messages about the mesh's set and surface names, for the lookups of the
 !> deck's names (raccord_model_build, raccord_contact_surface): what a
 !> name that is not of the kind asked for is instead, the near miss by
-!> case in a Gmsh mesh (whose names compare exactly), and the names of one
-!> kind, listed up to MAX_LISTED. Lookups themselves are raccord_mesh's
+!> case in a Gmsh mesh (whose names compare exactly) or of a quoted Abaqus
+!> label (which keeps its case), and the names of one kind, listed up to
+!> MAX_LISTED (a quoted Abaqus label in its double quotes). Lookups themselves are raccord_mesh's
 !> find_* (doc/mesh-formats.md, "Set and surface names").
 module raccord_mesh_names
-  use raccord_strings, only: str, lower
-  use raccord_mesh, only: mesh_t, find_node_set, find_elem_set, find_surface
+  use raccord_strings, only: str, lower, clipped
+  use raccord_mesh, only: mesh_t, find_node_set, find_elem_set, find_surface, case_kept, unquoted_key
   implicit none
   private
 
@@ -120,45 +121,60 @@ contains
     if (allocated(mesh%source)) s = mesh%source
   end function source
 
-  !> A Gmsh mesh compares names exactly: a name of the mesh that differs
-  !> from `name` only by case is named, with its kind. '' when none (and
-  !> always for an Abaqus mesh, whose lookups ignore case).
+  !> A Gmsh mesh compares names exactly, and so does an Abaqus mesh for a
+  !> label given in double quotes: a name of the mesh that differs from
+  !> `name` only by case (for Abaqus: by case or blanks, a quoted label) is
+  !> named, with its kind. '' when none.
   function case_hint(mesh, name) result(s)
     type(mesh_t), intent(in) :: mesh
     character(len=*), intent(in) :: name
     character(len=:), allocatable :: s
-    character(len=:), allocatable :: key
     integer :: k
     s = ''
-    if (mesh%ignore_case) return
-    key = lower(trim(name))
     if (allocated(mesh%surfaces)) then
       do k = 1, size(mesh%surfaces)
-        if (lower(mesh%surfaces(k)%name) /= key) cycle
+        if (.not. near(mesh%surfaces(k)%name, mesh%surfaces(k)%key)) cycle
         s = hint(mesh%surfaces(k)%name, kind_text(mesh, 'surface'))
         return
       end do
     end if
     if (allocated(mesh%esets)) then
       do k = 1, size(mesh%esets)
-        if (lower(mesh%esets(k)%name) /= key) cycle
+        if (.not. near(mesh%esets(k)%name, mesh%esets(k)%key)) cycle
         s = hint(mesh%esets(k)%name, kind_text(mesh, 'elem'))
         return
       end do
     end if
     if (allocated(mesh%nsets)) then
       do k = 1, size(mesh%nsets)
-        if (lower(mesh%nsets(k)%name) /= key) cycle
+        if (.not. near(mesh%nsets(k)%name, mesh%nsets(k)%key)) cycle
         s = hint(mesh%nsets(k)%name, kind_text(mesh, 'node'))
         return
       end do
     end if
   contains
+    !> The set (of that spelling and key) is a near miss of `name`.
+    logical function near(set_name, key)
+      character(len=:), allocatable, intent(in) :: set_name, key
+      near = .false.
+      if (.not. allocated(set_name)) return
+      if (mesh%ignore_case) then
+        if (.not. allocated(key)) return
+        near = case_kept(key) .and. unquoted_key(key) == unquoted_key(trim(name))
+      else
+        near = lower(set_name) == lower(trim(name))
+      end if
+    end function near
     function hint(found, what) result(h)
       character(len=*), intent(in) :: found, what
       character(len=:), allocatable :: h
-      h = ' (Gmsh names are case-sensitive: the mesh has ''' // found // ''', ' // what // &
-        '; write the name as the mesh spells it)'
+      if (mesh%ignore_case) then
+        h = ' (Abaqus keeps the case of a label in double quotes: the mesh has "' // clipped(found, 60) // '", ' // &
+          what // '; write it in the deck in that case, ''' // clipped(found, 60) // ''')'
+      else
+        h = ' (Gmsh names are case-sensitive: the mesh has ''' // clipped(found, 60) // ''', ' // what // &
+          '; write the name as the mesh spells it)'
+      end if
     end function hint
   end function case_hint
 
@@ -176,21 +192,21 @@ contains
       if (allocated(mesh%nsets)) then
         n = size(mesh%nsets)
         do k = 1, min(n, MAX_LISTED)
-          s = s // merge(', ', '  ', k > 1) // mesh%nsets(k)%name
+          s = s // merge(', ', '  ', k > 1) // listed(mesh, mesh%nsets(k)%name, mesh%nsets(k)%key)
         end do
       end if
     case ('elem')
       if (allocated(mesh%esets)) then
         n = size(mesh%esets)
         do k = 1, min(n, MAX_LISTED)
-          s = s // merge(', ', '  ', k > 1) // mesh%esets(k)%name
+          s = s // merge(', ', '  ', k > 1) // listed(mesh, mesh%esets(k)%name, mesh%esets(k)%key)
         end do
       end if
     case default
       if (allocated(mesh%surfaces)) then
         n = size(mesh%surfaces)
         do k = 1, min(n, MAX_LISTED)
-          s = s // merge(', ', '  ', k > 1) // mesh%surfaces(k)%name
+          s = s // merge(', ', '  ', k > 1) // listed(mesh, mesh%surfaces(k)%name, mesh%surfaces(k)%key)
         end do
       end if
     end select
@@ -203,6 +219,18 @@ contains
       'without a name in $PhysicalNames; name them in the .geo, e.g. Physical Surface("plate") = {1};, ' // &
       'or write the number in the deck)'
   end function set_names
+
+  !> A set's name as listed: a quoted Abaqus label (one whose case counts)
+  !> in its double quotes, so that "top" and top (TOP) read apart.
+  pure function listed(mesh, name, key) result(s)
+    type(mesh_t), intent(in) :: mesh
+    character(len=:), allocatable, intent(in) :: name, key
+    character(len=:), allocatable :: s
+    s = ''
+    if (allocated(name)) s = clipped(name, 60)
+    if (.not. mesh%ignore_case .or. .not. allocated(key)) return
+    if (case_kept(key)) s = '"' // s // '"'
+  end function listed
 
   !> One of the comma-separated names of list s is a number.
   pure logical function has_number_name(s) result(yes)

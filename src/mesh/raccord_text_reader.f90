@@ -34,13 +34,29 @@ contains
     type(error_t), intent(inout) :: err
     integer :: ios
     character(len=512) :: msg
-    logical :: exists, busy
+    logical :: exists, busy, folder
+    integer(i8) :: nbytes
     tf%path = path
     tf%line_no = 0
     inquire(file=path, exist=exists)
     if (.not. exists) then
       call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" does not exist: check the path ' // &
         '(relative paths are taken from the scene deck''s folder)')
+      return
+    end if
+    ! A folder, a pipe (FIFO) or a device (/dev/zero) is no mesh file: a
+    ! pipe without a writer would block the open for ever, a device read
+    ! without end. A folder's '.' exists; the others (and an empty file)
+    ! have size 0, so they are refused before they are opened.
+    inquire(file=path // '/.', exist=folder)
+    if (folder) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is a folder: give the mesh file in it')
+      return
+    end if
+    inquire(file=path, size=nbytes)
+    if (nbytes == 0) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is empty (0 bytes), or is a pipe or ' // &
+        'device, which raccord does not read: give a mesh file (Gmsh .msh or Abaqus .inp)')
       return
     end if
     ! A file this process is reading already (an Abaqus *INCLUDE cycle):
@@ -152,6 +168,19 @@ contains
     tf%line_no = tf%line_no + 1
     if (len(line) > 0) then
       if (line(len(line):len(line)) == achar(13)) line = line(1:len(line)-1)
+    end if
+    ! a UTF-8 byte-order mark that an editor put before the first line, as
+    ! the deck reader drops it (it made "$MeshFormat" read as another word)
+    if (tf%line_no == 1 .and. len(line) >= 3) then
+      if (iachar(line(1:1)) == 239 .and. iachar(line(2:2)) == 187 .and. iachar(line(3:3)) == 191) &
+        line = line(4:)
+    end if
+    ! A NUL byte is in no text file: a binary file (an .h5 given to
+    ! *INCLUDE) had its lines skipped as data of a skipped keyword.
+    if (index(line, achar(0)) > 0) then
+      call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no) // ': a NUL byte: this is a binary ' // &
+        'file, not a mesh text file (Gmsh .msh ASCII or Abaqus .inp)')
+      eof = .true.
     end if
   end subroutine read_line
 

@@ -5,7 +5,7 @@ module raccord_deck_checks
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
-  use raccord_strings, only: str, lower
+  use raccord_strings, only: str, lower, clipped
   use raccord_deck_scan, only: deck_block_t, join_names
   use raccord_scene, only: MAX_TABLE
   implicit none
@@ -17,6 +17,9 @@ module raccord_deck_checks
     'method', 'multiplier', 'kinematics', 'material', 'volumetric', 'conditions', 'edge_multipliers']
 
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
+
+  !> Characters of a value quoted in a message (a longer one is cut).
+  integer, parameter :: MAX_ECHO = 80
 
   !> Sentinel of required real keys: no deck sets a real to -huge.
   real(wp), parameter, public :: UNSET = -huge(1.0_wp)
@@ -45,14 +48,15 @@ contains
       associate (key => blk%keys(k))
         if (.not. any(known == key%name)) then
           call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': unknown key ''' // &
-            key%name // ''' (known keys: ' // join_names(known) // '); check the spelling')
+            clipped(key%name, MAX_ECHO) // ''' (known keys: ' // join_names(known) // '); check the spelling')
           return
         end if
         if (any(TEXT_KEYS == key%name)) then
           value = blk%value_text(k)
           if (value(1:1) /= '''' .and. value(1:1) /= '"') then
             call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
-              ''' = ' // value // ': text must be in quotes; write ' // key%name // ' = ''' // value // '''')
+              ''' = ' // clipped(value, MAX_ECHO) // ': text must be in quotes; write ' // key%name // ' = ''' // &
+              clipped(value, MAX_ECHO) // '''')
             return
           end if
         end if
@@ -81,7 +85,7 @@ contains
     n = len(item)
     if (item(n:n) == ',') item = trim(item(1:n-1))
     call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
-      blk%keys(k)%name // ''' (' // item // '): cannot read the value (' // trim(iomsg) // &
+      blk%keys(k)%name // ''' (' // clipped(item, MAX_ECHO) // '): cannot read the value (' // trim(iomsg) // &
       '); give ' // expected_form(blk%group, blk%keys(k)%name))
   end subroutine unreadable
 
@@ -114,7 +118,7 @@ contains
     character(len=:), allocatable :: given
     k = blk%find(key)
     given = ''
-    if (k > 0) given = ' = ' // blk%value_text(k)
+    if (k > 0) given = ' = ' // clipped(blk%value_text(k), MAX_ECHO)
     call raise_error(err, EXIT_INPUT, head(deck, blk, blk%key_line(key), label) // ': key ''' // key // '''' // &
       given // ': ' // problem // '; ' // fix)
   end subroutine bad_value

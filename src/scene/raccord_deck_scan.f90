@@ -14,6 +14,7 @@
 !> the line; a key is a name, optionally subscripted, followed by '='.
 module raccord_deck_scan
   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
+  use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str, lower
   implicit none
@@ -118,7 +119,8 @@ contains
     character(len=256) :: msg
     character(len=1) :: c, quote
     integer :: u, ios, lnum, i, j, nblock
-    logical :: in_group, in_quote, at_end, is_folder
+    logical :: in_group, in_quote, at_end, is_folder, exists
+    integer(i8) :: nbytes
     type(deck_block_t), allocatable :: grown(:)
 
     allocate(blocks(16))
@@ -129,6 +131,15 @@ contains
     if (is_folder) then
       call raise_error(err, EXIT_INPUT, path // ': is a folder, not a scene deck; give the deck file ' // &
         '(e.g. ' // path // '/NAME.nml)')
+      return
+    end if
+    ! A pipe (FIFO) without a writer would block the open for ever, a
+    ! device (/dev/zero) read without end: both have size 0, as an empty
+    ! deck has, and are refused before they are opened.
+    inquire(file=path, exist=exists, size=nbytes)
+    if (exists .and. nbytes == 0) then
+      call raise_error(err, EXIT_INPUT, path // ': the scene deck is empty (0 bytes), or is a pipe or device, ' // &
+        'which raccord does not read; give the deck file (doc/scene-reference.md)')
       return
     end if
     open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=msg)
@@ -184,7 +195,7 @@ contains
             exit lines
           end if
           if (.not. any(known_groups == name)) then
-            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': unknown group ''&' // name // &
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': unknown group ''&' // shorten(name) // &
               ''' (known groups: ' // join_names(known_groups) // '); check the spelling')
             exit lines
           end if
@@ -382,7 +393,7 @@ contains
       if (s > 1) then
         if (block%mask(s-1:s-1) /= ' ' .and. block%mask(s-1:s-1) /= ',') then
           call raise_error(err, EXIT_INPUT, here // str(block%line_of(s)) // ': &' // block%group // &
-            ': key ''' // lower(block%mask(s:e)) // ''' runs into the text before it (''' // &
+            ': key ''' // shorten(lower(block%mask(s:e))) // ''' runs into the text before it (''' // &
             trim(adjustl(block%text(max(1, s-12):s-1))) // '''); separate items with a comma or a blank')
           return
         end if

@@ -10,7 +10,7 @@ module raccord_paths
   implicit none
   private
 
-  public :: is_absolute, path_dir, path_base, path_stem, path_join, current_dir, absolute_path
+  public :: is_absolute, path_dir, path_base, path_stem, path_join, current_dir, absolute_path, normal_path
 
   interface
     !> POSIX getcwd(3): fills buf, returns NULL when the path does not fit.
@@ -123,4 +123,35 @@ contains
       abs_path = path_join(cwd, path)
     end if
   end function absolute_path
+
+  !> absolute_path with its '.' and empty components dropped and each '..'
+  !> taken back, so that two spellings of one path compare equal (symbolic
+  !> links are not followed).
+  function normal_path(path) result(np)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: np
+    character(len=:), allocatable :: a, part
+    integer :: i, j, cut
+    a = absolute_path(path)
+    np = ''
+    i = 1
+    do while (i <= len(a))
+      j = index(a(i:), '/')
+      if (j == 0) then
+        j = len(a) + 1
+      else
+        j = i + j - 1
+      end if
+      part = a(i:j - 1)
+      i = j + 1
+      if (len(part) == 0 .or. part == '.') cycle
+      if (part == '..') then
+        cut = index(np, '/', back=.true.)
+        if (cut > 0) np = np(1:cut - 1)
+        cycle
+      end if
+      np = np // '/' // part
+    end do
+    if (len(np) == 0) np = '/'
+  end function normal_path
 end module raccord_paths

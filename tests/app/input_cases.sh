@@ -62,7 +62,7 @@ seed() {
 
 case $case_name in
 names_abaqus)
-  # An Abaqus mesh's names compare without regard to case (Abaqus's rule).
+  # An Abaqus mesh's unquoted labels compare without regard to case (Abaqus's rule).
   seed upper axi.nml axi.inp
   sed -i "s/elset = 'disc'/elset = 'DISC'/; s/set = 'disc_bottom'/set = 'Disc_Bottom'/; s/set = 'punch_top'/set = 'PUNCH_TOP'/; s/slave = 'punch_bottom'/slave = 'Punch_Bottom'/; s/master = 'disc_top'/master = 'DISC_TOP'/" "$d"
   try upper axi.nml 0 --check
@@ -78,11 +78,30 @@ names_abaqus)
   echo "&contact_pair slave = 'PUNCH_BOTTOM', master = 'Disc_Top', method = 'mortar' /" >> "$d"
   try twice axi.nml 2 --check
   says twice "&contact_pair #2" "as &contact_pair #1"
-  # Abaqus keeps a quoted label's case: "Punch_axis" is another set than punch_axis.
+  # Abaqus keeps a quoted label's case (doc/mesh-formats.md): ELSET="disc"
+  # and ELSET=disc (the label DISC) are two sets; the deck's 'disc' is the
+  # quoted one (both disc elements), its 'Disc' the unquoted one (element
+  # 1 only, so element 2 is in no body).
   seed quoted axi.nml axi.inp
-  printf '*NSET, NSET="Punch_axis"\n21\n' >> "$m"
-  try quoted axi.nml 2 --check
-  says quoted "axi.inp:50" '"Punch_axis"' '"punch_axis"' "quoted label"
+  sed -i 's/^\*ELEMENT, TYPE=CAX8, ELSET=disc$/*ELEMENT, TYPE=CAX8, ELSET="disc"/' "$m"
+  printf '*ELSET, ELSET=disc\n1\n' >> "$m"
+  try quoted axi.nml 0 --check
+  if ! grep -q "no &body" "$work/quoted/stderr.txt"; then
+    pass "'disc' is the quoted set of both elements"
+  else fail "'disc' did not find the quoted set \"disc\""; fi
+  seed unquoted axi.nml axi.inp
+  sed -i 's/^\*ELEMENT, TYPE=CAX8, ELSET=disc$/*ELEMENT, TYPE=CAX8, ELSET="disc"/' "$m"
+  printf '*ELSET, ELSET=disc\n1\n' >> "$m"
+  sed -i "s/elset = 'disc'/elset = 'Disc'/" "$d"
+  try unquoted axi.nml 2 --check
+  says unquoted "1 mesh elements belong to no &body" "which is in no &body"
+  # A quoted label keeps its case: the deck's other case is refused with
+  # the mesh's spelling.
+  seed case axi.nml axi.inp
+  sed -i 's/^\*SURFACE, NAME=punch_top,/*SURFACE, NAME="Punch_Top",/' "$m"
+  try case axi.nml 2 --check
+  says case "&boundary #2" "set 'punch_top' not found" 'the mesh has "Punch_Top"' "double quotes" \
+    "surfaces there: disc_top, disc_bottom, disc_right, punch_bottom, \"Punch_Top\""
   ;;
 names_gmsh)
   # A Gmsh mesh's names compare exactly; the near miss is named.

@@ -51,7 +51,8 @@
 #   damage, meshmix, threads, validdeck, messages) and of
 #   make_cases_features.sh (axi, finite, plastic, pairs, loops, mscale,
 #   abaqus, gmshphys, restart, fmutate), described there, and of
-#   make_cases_names.sh (names, bounds).
+#   make_cases_names.sh (names, bounds) and make_cases_files.sh (special,
+#   longtext, manysets).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -811,5 +812,8 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # The deck's names against the mesh's (case rules of each format, names of
 # the wrong kind) and the bounds of the deck's numbers, described there.
 . "$(dirname "$0")/make_cases_names.sh"
+# Pipes, devices and folders in place of input files, texts of 100000
+# characters, tens of thousands of sets, described there.
+. "$(dirname "$0")/make_cases_files.sh"
 
 echo "make_cases: $ncase cases in $cases"

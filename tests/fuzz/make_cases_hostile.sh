@@ -81,16 +81,18 @@ for d in plate.nml contact.nml; do
   set_args -o out "$d"
 done
 
-# Files without end of line: /dev/zero as the deck and as the mesh.
+# Files without end of line: /dev/zero as the deck and as the mesh, now
+# refused as a device before it is read (make_cases_files.sh has the same
+# with regular files of a line longer than the readers take).
 new_case sizes.deck-dev-zero sizes bad 2 "the deck is /dev/zero (one endless line)"
 set_args -o out /dev/zero
-set_names "longer than"
+set_names "pipe or device"
 new_case sizes.mesh-dev-zero sizes bad 2 "&mesh file = '/dev/zero', format = 'gmsh'"
 cp "$seeds/plate.nml" "$c/"
 set_key "$c/plate.nml" file "'/dev/zero'"
 set_key "$c/plate.nml" format "'gmsh'"
 set_args -o out plate.nml
-set_names "longer than"
+set_names "pipe or device"
 
 # ---------------------------------------------------------------- overflow
 over_case() {  # over_case NAME DECK KEY VALUE

@@ -5,12 +5,13 @@
 #
 # Families and expected exit codes:
 #   names   the deck's set, surface and element-set names against the
-#           mesh's: an Abaqus mesh compares them without regard to case
-#           (as Abaqus does), a Gmsh mesh exactly (as Gmsh does). Names in
-#           another case (Abaqus: valid; Gmsh: refused, the message names
-#           the mesh's spelling), two Abaqus labels that differ only by
-#           case with one in quotes (Abaqus keeps them apart: refused),
-#           pairs that resolve to one surface or to the same pair, a name
+#           mesh's: an Abaqus mesh reads them as Abaqus reads labels
+#           (without regard to case unless quoted: "top" and top are two
+#           sets, "TOP" and top one), a Gmsh mesh exactly (as Gmsh does).
+#           Names in another case (Abaqus unquoted: valid; Abaqus quoted
+#           and Gmsh: refused, the message names the mesh's spelling), a
+#           quoted and an unquoted label of one spelling (two sets, each
+#           reached), pairs that resolve to one surface or to the same pair, a name
 #           of the wrong kind (element set, node set, physical group of
 #           another dimension) as contact surface, load surface, boundary
 #           set or body; the message says what the name is and lists the
@@ -20,8 +21,9 @@
 #
 # Program bugs these families found, fixed at their root: an Abaqus mesh's
 # names were compared with the deck's case-sensitively (doc/mesh-formats.md
-# said case-insensitively); "Top" and TOP were merged into one set although
-# Abaqus keeps a quoted label's case; 'Top'/'TOP' pairs on an Abaqus mesh
+# said case-insensitively); "top" and top were merged into one set although
+# Abaqus keeps a quoted label's case (then "Top" beside TOP was refused;
+# now each is its own set, as in Abaqus); 'Top'/'TOP' pairs on an Abaqus mesh
 # escaped the check for a pair given twice; friction had no upper bound and
 # tolerance none (a tolerance of 1e300 was taken); a contact surface, load
 # surface or boundary set that named a set of another kind said only "not
@@ -42,17 +44,56 @@ cp "$seeds/plate.inp" "$c/"
 printf '*NSET, NSET=LEFT\n1\n' >> "$c/plate.inp"
 fvalid quoted-same names axi.nml "a quoted label spelled as the deck spells it"
 edit_lines "$fmesh" '$0 == "*SURFACE, NAME=punch_top, TYPE=ELEMENT" { $0 = "*SURFACE, NAME=\"punch_top\", TYPE=ELEMENT" } { print }'
-# Abaqus keeps a quoted label's case: "Punch_axis" and punch_axis are two sets there.
-fcase names.axi.inp.quoted-nset-clash names bad 2 axi.nml "*NSET, NSET=\"Punch_axis\" beside punch_axis"
+# Abaqus keeps a quoted label's case (Abaqus Analysis User's Guide, "Input
+# syntax rules", Labels): "Punch_axis" and punch_axis are two sets there.
+fvalid quoted-nset-apart names axi.nml "*NSET, NSET=\"Punch_axis\" beside punch_axis: two sets"
 printf '*NSET, NSET="Punch_axis"\n21\n' >> "$fmesh"
-set_names "Punch_axis"
-fcase names.axi.inp.quoted-surface-clash names bad 2 axi.nml "*SURFACE, NAME=\"DISC_TOP\" beside disc_top"
+fvalid quoted-surface-apart names axi.nml "*SURFACE, NAME=\"Disc_Top\" beside disc_top: two surfaces"
+printf '*SURFACE, NAME="Disc_Top", TYPE=ELEMENT\n1, S3\n' >> "$fmesh"
+# A quoted label in upper case is the unquoted label: "DISC_TOP" adds to
+# disc_top, here a face it has already (refused as an edge listed twice).
+fcase names.axi.inp.quoted-upper-joins names bad 2 axi.nml "*SURFACE, NAME=\"DISC_TOP\" adds disc_top's face again"
 printf '*SURFACE, NAME="DISC_TOP", TYPE=ELEMENT\n1, S3\n' >> "$fmesh"
-set_names "DISC_TOP"
-fcase names.axi.inp.quoted-elset-first names bad 2 axi.nml "ELSET=\"Disc\" first, then *ELSET, ELSET=disc"
-edit_lines "$fmesh" '$0 == "*ELEMENT, TYPE=CAX8, ELSET=disc" { $0 = "*ELEMENT, TYPE=CAX8, ELSET=\"Disc\"" } { print }'
+set_names "disc_top"
+# "disc" (both disc elements) and disc (the label DISC, element 1 only):
+# the deck's 'disc' is "disc" (spelt alike: the seed's run), its 'DISC' or
+# 'Disc' is DISC, which leaves element 2 out of every body.
+fvalid quoted-lower-first names axi.nml "ELSET=\"disc\" on *ELEMENT and *ELSET, ELSET=disc (element 1): 'disc' is \"disc\""
+edit_lines "$fmesh" '$0 == "*ELEMENT, TYPE=CAX8, ELSET=disc" { $0 = "*ELEMENT, TYPE=CAX8, ELSET=\"disc\"" } { print }'
 printf '*ELSET, ELSET=disc\n1\n' >> "$fmesh"
-set_names "disc"
+fcase names.axi.inp.unquoted-beside-quoted names bad 2 axi.nml "as above, the deck's 'Disc' is DISC (element 1): element 2 in no body"
+edit_lines "$fmesh" '$0 == "*ELEMENT, TYPE=CAX8, ELSET=disc" { $0 = "*ELEMENT, TYPE=CAX8, ELSET=\"disc\"" } { print }'
+printf '*ELSET, ELSET=disc\n1\n' >> "$fmesh"
+set_key "$fdeck" elset "'Disc'"
+set_names "no &body"
+# A quoted label is found only as spelt: the deck's other case is refused,
+# naming the quoted spelling.
+for n in punch_top disc_bottom; do
+  fcase "names.axi.inp.quoted-case-$n" names bad 2 axi.nml "*SURFACE, NAME=\"$n\" capitalised, the deck's '$n'"
+  edit_lines "$fmesh" -v n="$n" '$0 == "*SURFACE, NAME=" n ", TYPE=ELEMENT" { $0 = "*SURFACE, NAME=\"" toupper(substr(n, 1, 1)) substr(n, 2) "\", TYPE=ELEMENT" } { print }'
+  set_names "double quotes"
+done
+# A data line names a set by the same rule: "disc_row" in quotes is the
+# label disc_row, not the set disc_row of the *ELSET line (the label
+# DISC_ROW), and is undefined; "DISC_ROW" in quotes is that set.
+fcase names.axi.inp.quoted-entry-undefined names bad 2 axi.nml "*SURFACE face line naming \"disc_row\" (the set is DISC_ROW)"
+edit_lines "$fmesh" '$0 == "disc_row, S3" { $0 = "\"disc_row\", S3" } { print }'
+set_names "\"disc_row\""
+fvalid quoted-entry-upper names axi.nml "*SURFACE face line naming \"DISC_ROW\" (the label of disc_row)"
+edit_lines "$fmesh" '$0 == "disc_row, S3" { $0 = "\"DISC_ROW\", S3" } { print }'
+# Blanks in an unquoted label are ignored (Abaqus), kept in a quoted one.
+fvalid blanks-unquoted names axi.nml "ELSET=disc row (blanks ignored: DISCROW), named Disc Row by disc_top's face line"
+edit_lines "$fmesh" '{ sub(/ELSET=disc_row/, "ELSET=disc row"); sub(/^disc_row, S3$/, "Disc Row, S3") } { print }'
+# A label of no character, or blanks only, is refused.
+fcase names.axi.inp.empty-label names bad 2 axi.nml "*NSET, NSET=\"\" (no label)"
+printf '*NSET, NSET=""\n21\n' >> "$fmesh"
+set_names "needs its name"
+fcase names.axi.inp.blank-label names bad 2 axi.nml "*SURFACE, NAME=\" \" (blanks only)"
+printf '*SURFACE, NAME=" ", TYPE=ELEMENT\n1, S3\n' >> "$fmesh"
+set_names "no label"
+fcase names.axi.inp.empty-node-nset names bad 2 axi.nml "*NODE, NSET= (empty)"
+edit_lines "$fmesh" '$0 == "*NODE, NSET=disc_nodes" { $0 = "*NODE, NSET=" } { print }'
+set_names "no label"
 # Inside the .inp: a data line that names a set of the other kind says so.
 fcase names.axi.inp.surface-on-nset names bad 2 axi.nml "disc_top's faces given on the node set disc_nodes"
 edit_lines "$fmesh" '$0 == "disc_row, S3" { $0 = "disc_nodes, S3" } { print }'

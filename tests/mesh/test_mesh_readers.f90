@@ -23,6 +23,7 @@ program test_mesh_readers
     new_test('inp Q8 faces: mid nodes, shared side', test_inp_q8), &
     new_test('scale and format options', test_options), &
     new_test('element in two physical groups (2.2 repeats it)', test_two_groups), &
+    new_test('inp labels: quoted keep case, unquoted do not', test_inp_labels), &
     new_test('bad: missing file', test_bad_missing), &
     new_test('bad: truncated msh', test_bad_truncated), &
     new_test('bad: wrong node count 2.2', test_bad_count_22), &
@@ -353,6 +354,62 @@ contains
     call check(failure, b%surfaces(find_surface(b, 'd'))%nedge == 2 .and. &
       b%surfaces(find_surface(b, 'c'))%nedge == 1, 'two_groups: curve 1 in surfaces c and d')
   end subroutine test_two_groups
+
+  !> Abaqus's label rule (doc/mesh-formats.md, "Set and surface names"):
+  !> "top" and top are two sets, "TOP" and top one; blanks count only in
+  !> quotes; the deck's name finds a label spelt as it first, else an
+  !> unquoted label in any case.
+  subroutine test_inp_labels(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(mesh_t) :: m
+    integer :: q, u
+    call read_good(failure, 'labels.inp', m)
+    if (allocated(failure)) return
+    q = find_node_set(m, 'top')
+    u = find_node_set(m, 'TOP')
+    call check(failure, q > 0 .and. u > 0 .and. q /= u, 'labels: "top" and top are two node sets')
+    if (allocated(failure)) return
+    call check(failure, same_ids(m, m%nsets(q)%nodes, [4]), 'labels: "top" holds node 4 alone')
+    call check(failure, same_ids(m, m%nsets(u)%nodes, [5, 6]), 'labels: top and "TOP" are one set (nodes 5, 6)')
+    call check(failure, find_node_set(m, 'Top') == u .and. find_node_set(m, 'tOp') == u, &
+      'labels: the unquoted TOP is found in any case but the quoted one''s')
+    call check(failure, m%nsets(u)%name == 'TOP', 'labels: beside "top", top goes by its label TOP, got ' // &
+      m%nsets(u)%name)
+    q = find_node_set(m, 'Left Edge')
+    u = find_node_set(m, 'LEFTEDGE')
+    call check(failure, q > 0 .and. u > 0 .and. q /= u, 'labels: "Left Edge" and LeftEdge are two node sets')
+    if (allocated(failure)) return
+    call check(failure, same_ids(m, m%nsets(q)%nodes, [1]) .and. same_ids(m, m%nsets(u)%nodes, [2, 4]), &
+      'labels: left edge (blanks ignored) joins LeftEdge, not "Left Edge"')
+    call check(failure, find_node_set(m, 'left edge') == u .and. find_node_set(m, 'left Edge') == u, &
+      'labels: the deck''s name with blanks reads as the unquoted label')
+    u = find_node_set(m, 'both')
+    call check(failure, u > 0, 'labels: node set both')
+    if (u > 0) call check(failure, same_ids(m, m%nsets(u)%nodes, [4, 5, 6]), &
+      'labels: a data line names "top" (node 4) and Top (5, 6)')
+    q = find_elem_set(m, 'Plate')
+    u = find_elem_set(m, 'PLATE')
+    call check(failure, q > 0 .and. u > 0 .and. q /= u .and. find_elem_set(m, 'plate') == u, &
+      'labels: ELSET="Plate" and ELSET=plate are two sets, plate found as PLATE')
+    q = find_surface(m, 'upper')
+    u = find_surface(m, 'UPPER')
+    call check(failure, q > 0 .and. u > 0 .and. q /= u .and. size(m%surfaces) == 2, &
+      'labels: *SURFACE "upper" and upper are two surfaces')
+    if (q > 0 .and. u > 0 .and. q /= u) then
+      call check(failure, m%surfaces(q)%nedge == 1 .and. m%surfaces(u)%nedge == 1 .and. &
+        m%elem_id(m%surfaces(q)%elem(1)) == 1 .and. m%elem_id(m%surfaces(u)%elem(1)) == 2, &
+        'labels: "upper" is the face of element 1 ("Plate"), upper that of element 2 (plate)')
+      call check(failure, m%surfaces(q)%name /= m%surfaces(u)%name, 'labels: the two surfaces are named apart')
+    end if
+  end subroutine test_inp_labels
+
+  !> The file ids of internal node indices nodes(:) are ids(:), in order.
+  logical function same_ids(m, nodes, ids)
+    type(mesh_t), intent(in) :: m
+    integer, intent(in) :: nodes(:), ids(:)
+    same_ids = size(nodes) == size(ids)
+    if (same_ids) same_ids = all(m%node_id(nodes) == ids)
+  end function same_ids
 
   subroutine test_bad_missing(failure)
     type(failure_t), allocatable, intent(out) :: failure
