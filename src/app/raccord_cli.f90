@@ -3,6 +3,7 @@ module raccord_cli
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_USAGE
+  use raccord_strings, only: clipped
   implicit none
   private
 
@@ -50,6 +51,10 @@ contains
       case ('-v', '--verbose')
         cli%verbose = .true.
       case ('-o', '--output')
+        if (allocated(cli%output_dir)) then
+          call given_twice(arg, cli%output_dir, err)
+          return
+        end if
         call option_value(k, n, arg, 'a folder: raccord --output DIR SCENE', cli%output_dir, err)
         if (err%failed()) return
         if (len_trim(cli%output_dir) == 0) then
@@ -58,6 +63,10 @@ contains
           return
         end if
       case ('--restart')
+        if (allocated(cli%restart_path)) then
+          call given_twice(arg, cli%restart_path, err)
+          return
+        end if
         call option_value(k, n, arg, 'a checkpoint: raccord --restart DIR/NAME.checkpoint.h5 [SCENE]', &
           cli%restart_path, err)
         if (err%failed()) return
@@ -68,6 +77,10 @@ contains
           return
         end if
       case ('--verify')
+        if (allocated(cli%verify_path)) then
+          call given_twice(arg, cli%verify_path, err)
+          return
+        end if
         call option_value(k, n, arg, 'a results or checkpoint file: raccord --verify FILE', cli%verify_path, err)
         if (err%failed()) return
         if (len_trim(cli%verify_path) == 0) then
@@ -75,6 +88,10 @@ contains
           return
         end if
       case ('--wall-clock')
+        if (allocated(cli%wall_clock_source)) then
+          call given_twice(arg, '', err)
+          return
+        end if
         call option_value(k, n, arg, 'seconds: raccord --wall-clock 3600 SCENE', value, err)
         if (err%failed()) return
         call read_seconds(value, 'option --wall-clock', cli%wall_clock, err)
@@ -202,4 +219,18 @@ contains
       '            4 file system failure, 5 stopped at the wall-clock limit or by SIGTERM or SIGUSR1,' // nl // &
       '            checkpoint written: continue with --restart (a checkpoint it refuses: 2)'
   end function usage_text
+
+  !> An option that takes a value, given a second time: refused, since a
+  !> job script that adds its own -o to a user's would otherwise have the
+  !> last one win without a word.
+  subroutine given_twice(arg, first, err)
+    character(len=*), intent(in) :: arg, first
+    type(error_t), intent(inout) :: err
+    if (len(first) == 0) then
+      call raise_error(err, EXIT_USAGE, 'option ' // arg // ' is given twice: give it once')
+    else
+      call raise_error(err, EXIT_USAGE, 'option ' // arg // ' is given twice (the first: ''' // &
+        clipped(first, 80) // '''): give it once')
+    end if
+  end subroutine given_twice
 end module raccord_cli

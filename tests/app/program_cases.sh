@@ -123,6 +123,16 @@ usage_errors)
   run "$data/bar_coarse.nml" --output
   expect_code 1
   expect_text "$work/stderr.txt" "option --output needs a folder" "stderr (--output without folder)"
+  # an option with a value given twice (a job script's -o beside a user's)
+  run -o "$work/a" --output "$work/b" "$data/bar_coarse.nml"
+  expect_code 1
+  expect_text "$work/stderr.txt" "option --output is given twice (the first: '$work/a')" "stderr (-o twice)"
+  run --wall-clock 100 --wall-clock 200 "$data/bar_coarse.nml"
+  expect_code 1
+  expect_text "$work/stderr.txt" "option --wall-clock is given twice" "stderr (--wall-clock twice)"
+  run --restart "$work/a/x.checkpoint.h5" --restart "$work/b/x.checkpoint.h5"
+  expect_code 1
+  expect_text "$work/stderr.txt" "option --restart is given twice" "stderr (--restart twice)"
   left=$(find "$work" -mindepth 1 ! -name stdout.txt ! -name stderr.txt -print)
   if [ -z "$left" ]; then pass "nothing written"; else fail "files written: $left"; fi
   ;;
