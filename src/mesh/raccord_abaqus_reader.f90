@@ -323,7 +323,7 @@ contains
     integer, allocatable :: f(:), l(:)
     integer :: nf, id, k, a
     integer :: conn(8)
-    real(wp) :: xy(2)
+    real(wp) :: xy(2), z
     character(len=:), allocatable :: at
 
     at = loc_text(d, sl)
@@ -342,8 +342,15 @@ contains
       call field_int(sl, d, f, l, 1, 'node id', id, err)
       call field_real(sl, d, f, l, 2, 'x', xy(1), err)
       call field_real(sl, d, f, l, 3, 'y', xy(2), err)
+      z = 0.0_wp
+      ! an empty fourth field is z = 0, as Abaqus reads empty fields
+      if (nf == 4) then
+        if (f(4) <= l(4)) then
+          if (len_trim(sl%text(f(4):l(4))) > 0) call field_real(sl, d, f, l, 4, 'z', z, err)
+        end if
+      end if
       if (err%failed()) return
-      call add_node(d, id, xy, sl%ifile, sl%line)
+      call add_node(d, id, xy, sl%ifile, sl%line, z)
       if (st%set > 0) call add_member(d%nsets(st%set), id, sl%ifile, sl%line)
     case (BLK_ELEMENT)
       if (nf /= 1 + st%nen) then

@@ -309,7 +309,7 @@ contains
     character(len=:), allocatable :: line
     integer, allocatable :: f(:), l(:), tags(:), tag_line(:)
     integer :: nf, nblock, ntotal, nread, b, n, k, header_line, parametric
-    real(wp) :: xy(2)
+    real(wp) :: xy(2), z
     call next_data_line(tf, 'Nodes', 'the block and node counts', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     header_line = tf%line_no
@@ -339,8 +339,10 @@ contains
         if (err%failed()) return
         call get_real(tf, line, f, l, 1, 'x', xy(1), err)
         call get_real(tf, line, f, l, 2, 'y', xy(2), err)
+        z = 0.0_wp
+        if (nf >= 3) call get_real(tf, line, f, l, 3, 'z', z, err)
         if (err%failed()) return
-        call add_node(d, tags(k), xy, st%ifile, tag_line(k))
+        call add_node(d, tags(k), xy, st%ifile, tag_line(k), z)
       end do
       nread = nread + n
       deallocate(tags, tag_line)
@@ -363,7 +365,7 @@ contains
     character(len=:), allocatable :: line
     integer, allocatable :: f(:), l(:)
     integer :: nf, n, k, id
-    real(wp) :: xy(2)
+    real(wp) :: xy(2), z
     call read_count(tf, 'Nodes', 'the number of nodes', n, err)
     if (err%failed()) return
     do k = 1, n
@@ -372,8 +374,10 @@ contains
       call get_int(tf, line, f, l, 1, 'node id', id, err)
       call get_real(tf, line, f, l, 2, 'x', xy(1), err)
       call get_real(tf, line, f, l, 3, 'y', xy(2), err)
+      z = 0.0_wp
+      if (nf >= 4) call get_real(tf, line, f, l, 4, 'z', z, err)
       if (err%failed()) return
-      call add_node(d, id, xy, st%ifile, tf%line_no)
+      call add_node(d, id, xy, st%ifile, tf%line_no, z)
     end do
     call expect_end(tf, 'Nodes', err)
   end subroutine read_nodes_22

@@ -42,6 +42,8 @@ contains
     if (err%failed()) return
     call build_elements(d, node_map, new_node, mesh, err)
     if (err%failed()) return
+    call check_plane(d, new_node, err)
+    if (err%failed()) return
     call check_shapes(d, mesh, err)
     if (err%failed()) return
     call check_shared_sides(d, mesh, err)
@@ -59,6 +61,44 @@ contains
     if (allocated(d%axi_types)) mesh%axi_types = d%axi_types
     mesh%ignore_case = d%format_name == 'abaqus'
   end subroutine finalize_mesh
+
+  !> raccord is 2D: it reads x and y, so the nodes of the elements must lie
+  !> in one plane z = const (Gmsh writes z = 0 for a 2D mesh, Abaqus's
+  !> *NODE may give a z). A section meshed in another plane, or a surface
+  !> mesh of a 3D part, would be read squashed onto x-y: refused, naming
+  !> the two nodes farthest apart in z. The bound, 1e-9 of the x-y
+  !> extent, passes the round-off of a plane written at constant z.
+  subroutine check_plane(d, new_node, err)
+    type(mesh_draft_t), intent(in) :: d
+    integer, intent(in) :: new_node(:)
+    type(error_t), intent(inout) :: err
+    integer :: k, klo, khi
+    real(wp) :: lo(2), hi(2), extent
+    klo = 0
+    khi = 0
+    lo = huge(1.0_wp)
+    hi = -huge(1.0_wp)
+    do k = 1, d%nnode
+      if (new_node(k) == 0) cycle
+      lo = min(lo, d%x(:, k))
+      hi = max(hi, d%x(:, k))
+      if (klo == 0) then
+        klo = k
+        khi = k
+      else
+        if (d%z(k) < d%z(klo)) klo = k
+        if (d%z(k) > d%z(khi)) khi = k
+      end if
+    end do
+    if (klo == 0) return
+    extent = maxval(hi - lo)
+    if (d%z(khi) - d%z(klo) <= 1.0e-9_wp*extent) return
+    call raise_error(err, EXIT_INPUT, where_text(d, d%node_file(khi), d%node_line(khi)) // ': node ' // &
+      str(d%node_id(khi)) // ' has z = ' // str(d%z(khi)) // ', node ' // str(d%node_id(klo)) // ' (' // &
+      where_text(d, d%node_file(klo), d%node_line(klo)) // ') has z = ' // str(d%z(klo)) // &
+      ': the elements are not in one plane z = const; raccord is 2D and reads x and y only. ' // &
+      'Mesh the section in the x-y plane (Gmsh: a 2D geometry at z = 0)')
+  end subroutine check_plane
 
   !> File id -> draft index maps; a repeated id is an error at its second use.
   subroutine map_ids(d, node_map, elem_map, err)

@@ -50,6 +50,7 @@ module raccord_mesh_draft
     integer :: nnode = 0
     integer, allocatable :: node_id(:)
     real(wp), allocatable :: x(:,:)                   !< (2, nnode)
+    real(wp), allocatable :: z(:)                     !< (nnode) the file's z, 0 if it has none (finalize_mesh checks it is one plane)
     integer, allocatable :: node_file(:), node_line(:)
     integer :: nelem = 0
     integer, allocatable :: elem_id(:), etype(:)
@@ -97,13 +98,14 @@ contains
     if (line > 0) s = s // ':' // str(line)
   end function where_text
 
-  subroutine add_node(d, id, xy, ifile, line)
+  subroutine add_node(d, id, xy, ifile, line, z)
     type(mesh_draft_t), intent(inout) :: d
     integer, intent(in) :: id, ifile, line
     real(wp), intent(in) :: xy(2)
+    real(wp), intent(in), optional :: z      !< the file's z coordinate, if it gives one
     integer :: cap
     if (.not. allocated(d%node_id)) then
-      allocate(d%node_id(64), d%x(2, 64), d%node_file(64), d%node_line(64))
+      allocate(d%node_id(64), d%x(2, 64), d%z(64), d%node_file(64), d%node_line(64))
     end if
     cap = size(d%node_id)
     if (d%nnode == cap) then
@@ -111,10 +113,13 @@ contains
       call grow_int(d%node_file, 2*cap)
       call grow_int(d%node_line, 2*cap)
       call grow_real2(d%x, 2*cap)
+      call grow_real(d%z, 2*cap)
     end if
     d%nnode = d%nnode + 1
     d%node_id(d%nnode) = id
     d%x(:, d%nnode) = xy
+    d%z(d%nnode) = 0.0_wp
+    if (present(z)) d%z(d%nnode) = z
     d%node_file(d%nnode) = ifile
     d%node_line(d%nnode) = line
   end subroutine add_node
@@ -305,6 +310,15 @@ contains
     tmp(:, 1:size(a, 2)) = a
     call move_alloc(tmp, a)
   end subroutine grow_int2
+
+  pure subroutine grow_real(a, cap)
+    real(wp), allocatable, intent(inout) :: a(:)
+    integer, intent(in) :: cap
+    real(wp), allocatable :: tmp(:)
+    allocate(tmp(cap))
+    tmp(1:size(a)) = a
+    call move_alloc(tmp, a)
+  end subroutine grow_real
 
   pure subroutine grow_real2(a, cap)
     real(wp), allocatable, intent(inout) :: a(:,:)

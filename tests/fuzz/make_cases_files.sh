@@ -24,6 +24,10 @@
 #   bom      a UTF-8 byte-order mark before the first line of a mesh (as
 #            the deck accepts one): read as without (the Gmsh reader did
 #            not find $MeshFormat, the Abaqus one saw a data line)    valid
+#   plane    nodes off one plane z = const (a Gmsh node or an Abaqus *NODE
+#            with another z): refused, naming both nodes (the z was
+#            dropped without a word); every node at one z reads as the
+#            x-y plane                                                 2, valid
 #   clobber  the deck or mesh named like one of the run's files in the
 #            output folder (plate.log with -o .): refused before anything
 #            is written (the log replaced the deck); a near name runs  2, valid
@@ -180,6 +184,26 @@ done
 new_case inpkw.plate.inp.blank-inside inpkw valid 0 "plate.inp: *NSET written *N SET (blanks ignored)"
 d=$(seed_pair plate.inp)
 edit_lines "$c/plate.inp" '/^\*NSET, NSET=left/ { sub(/^\*NSET/, "*N SET") } { print }'
+set_args -o out "$d"
+
+# ---------------------------------------------------------------- plane
+new_case plane.plate.msh.one-node-z plane bad 2 "plate.msh with one node at z = 0.5"
+d=$(seed_pair plate.msh)
+edit_lines "$c/plate.msh" '/^\$Nodes/ { on = 1 } /^\$EndNodes/ { on = 0 } on && NF == 3 && !done && $1 != 0 { $3 = "0.5"; done = 1 } { print }'
+set_args -o out "$d"
+set_names "not in one plane"
+new_case plane.plate.inp.one-node-z plane bad 2 "plate.inp with *NODE 2 at z = -1e-3"
+d=$(seed_pair plate.inp)
+edit_lines "$c/plate.inp" '$0 == "2, 2., 0." { $0 = "2, 2., 0., -1e-3" } { print }'
+set_args -o out "$d"
+set_names "not in one plane"
+new_case plane.plate.msh.constant-z plane valid 0 "plate.msh with every node at z = 5"
+d=$(seed_pair plate.msh)
+edit_lines "$c/plate.msh" '/^\$Nodes/ { on = 1 } /^\$EndNodes/ { on = 0 } on && NF == 3 { $3 = "5" } { print }'
+set_args -o out "$d"
+new_case plane.plate.inp.constant-z plane valid 0 "plate.inp with every node at z = 5"
+d=$(seed_pair plate.inp)
+edit_lines "$c/plate.inp" '/^\*/ { on = ($0 ~ /^\*NODE/) } on && !/^\*/ { $0 = $0 ", 5." } { print }'
 set_args -o out "$d"
 
 # ---------------------------------------------------------------- bom
