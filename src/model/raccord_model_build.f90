@@ -61,9 +61,9 @@ contains
       ' (OMP_NUM_THREADS)')
   end subroutine build_model
 
-  !> The deck's check of its pairs compares the names as written; an
-  !> Abaqus mesh compares them without regard to case, so 'Top' and 'TOP'
-  !> are one surface there. A pair whose slave and master are one surface,
+  !> The deck's check of its pairs compares the names as written; in an
+  !> Abaqus mesh an unquoted label is found in any case, so 'Top' and
+  !> 'TOP' can be one surface there (doc/mesh-formats.md). A pair whose slave and master are one surface,
   !> or two pairs on the same slave and master surfaces, are refused here
   !> by the surfaces the names resolve to. Names that resolve to no
   !> surface are left to init_contact_pairs, which says what they are.
@@ -107,7 +107,7 @@ contains
     type(mesh_t), intent(in) :: mesh
     character(len=:), allocatable :: s
     s = ''
-    if (mesh%ignore_case) s = ' (an Abaqus mesh''s names compare without regard to case)'
+    if (mesh%ignore_case) s = ' (in an Abaqus mesh a deck name finds an unquoted label in any case)'
   end function name_rule
 
   !> Each node's internal force starts from the first block, in the order

@@ -62,7 +62,7 @@ seed() {
 
 case $case_name in
 names_abaqus)
-  # An Abaqus mesh's unquoted labels compare without regard to case (Abaqus's rule).
+  # An Abaqus mesh's unquoted labels are found in any case (Abaqus's rule).
   seed upper axi.nml axi.inp
   sed -i "s/elset = 'disc'/elset = 'DISC'/; s/set = 'disc_bottom'/set = 'Disc_Bottom'/; s/set = 'punch_top'/set = 'PUNCH_TOP'/; s/slave = 'punch_bottom'/slave = 'Punch_Bottom'/; s/master = 'disc_top'/master = 'DISC_TOP'/" "$d"
   try upper axi.nml 0 --check
@@ -72,7 +72,7 @@ names_abaqus)
   seed self axi.nml axi.inp
   sed -i "s/slave = 'punch_bottom'/slave = 'disc_top'/; s/master = 'disc_top'/master = 'Disc_Top'/" "$d"
   try self axi.nml 2 --check
-  says self "&contact_pair #1" "slave and master are the same surface 'disc_top'" "without regard to case"
+  says self "&contact_pair #1" "slave and master are the same surface 'disc_top'" "finds an unquoted label in any case"
   # A second pair that is the first one in other spellings.
   seed twice axi.nml axi.inp
   echo "&contact_pair slave = 'PUNCH_BOTTOM', master = 'Disc_Top', method = 'mortar' /" >> "$d"
