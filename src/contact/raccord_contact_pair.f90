@@ -34,6 +34,7 @@ module raccord_contact_pair
     logical :: weighted = .false.                  !< mortar: conditions on each weighted gap
     real(wp) :: mu = 0.0_wp
     real(wp) :: reach = 0.0_wp                     !< search distance
+    real(wp) :: open_reach = 0.0_wp                !< mortar: largest open gap that enters the rows
     integer :: max_iter = 50
     type(contact_surface_t) :: slave, master
     type(constraint_set_t) :: cs
@@ -152,6 +153,13 @@ contains
         pair%max_iter = spec%max_iterations
         pair%reach = spec%search_distance
         if (pair%reach <= 0.0_wp) pair%reach = max(pair%slave%h_max, pair%master%h_max)
+        ! Mortar rows take in open parts of the slave up to one surface
+        ! element from the master, whatever the search distance: a larger
+        ! distance widens the search and the depth of overlap caught, not
+        ! the zone of G1's projection, whose nodal gap (19) would otherwise
+        ! change with it (build_mortar; doc/theory-contact-mortar.md
+        ! section 3). The default distance is that bound, so nothing moves.
+        pair%open_reach = min(pair%reach, max(pair%slave%h_max, pair%master%h_max))
         call verlet_init(pair%verlet, pair%slave, pair%master, spec%method == METHOD_MORTAR, pair%reach)
         associate (ns => pair%slave%nnode)
           allocate(pair%status(ns), source=ST_OPEN)
@@ -254,7 +262,8 @@ contains
     end if
     select case (pair%method)
     case (METHOD_MORTAR)
-      call build_mortar(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, pair%multiplier, &
+      call build_mortar(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, pair%open_reach, &
+        pair%multiplier, &
         pair%verlet, pair%cs, pair%mortar)
     case default
       call build_node_to_segment(pair%slave, pair%master, pair%xcur, pair%xpred, pair%dcur, pair%reach, &

@@ -8,7 +8,8 @@
 !> nodes a, with (paper, after (15) and (16))
 !>   G1(i, j)  = integral of phi_i psi_j dGamma,   G21(a, j) = integral of phi_a psi_j dGamma,
 !> integrated over the part of the slave surface that faces the master
-!> within `reach`. The multiplier solver then imposes (19) on G1 lambda and
+!> with a gap between -reach and +open_reach (open_reach <= reach: see
+!> build_mortar). The multiplier solver then imposes (19) on G1 lambda and
 !> on the nodal gap G1^-1 g_w (raccord_multiplier_solver).
 !>
 !> Geometry (nodal normals, segmentation, integrals) is taken on x, the
@@ -199,14 +200,21 @@ contains
     end do
   end subroutine init_mortar
 
-  !> Constraints of the slave multipliers that meet the master within
-  !> `reach`: geometry on x (t(n)), weighted gaps on xpred (predicted
-  !> t(n+1)), weighted slip on the increments du. `multiplier` is MULT_P1,
-  !> MULT_P0 or MULT_DUAL (as given to init_mortar).
-  subroutine build_mortar(slave, master, x, xpred, du, reach, multiplier, v, cs, w)
+  !> Constraints of the slave multipliers that meet the master with a gap
+  !> between -reach and +open_reach: geometry on x (t(n)), weighted gaps on
+  !> xpred (predicted t(n+1)), weighted slip on the increments du.
+  !> `reach` (the search distance) bounds the candidate search and how deep
+  !> an overlap is caught; `open_reach` (<= reach) bounds how far open a part
+  !> of the slave may be and still enter G1 and G21. The paper's nodal gap
+  !> G1^-1 g_w (19) is an L2 projection over every row, so a far part whose
+  !> gap climbs steeply (a die's flank) makes it undershoot below zero at an
+  !> open node next to the contact zone, which is then held closed
+  !> (doc/theory-contact-mortar.md section 3, "Which parts enter the rows").
+  !> `multiplier` is MULT_P1, MULT_P0 or MULT_DUAL (as given to init_mortar).
+  subroutine build_mortar(slave, master, x, xpred, du, reach, open_reach, multiplier, v, cs, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:), xpred(:,:), du(:,:)
-    real(wp), intent(in) :: reach
+    real(wp), intent(in) :: reach, open_reach
     integer, intent(in) :: multiplier
     type(verlet_t), intent(inout) :: v
     type(constraint_set_t), intent(inout) :: cs
@@ -282,11 +290,11 @@ contains
         ! slave segment.
         xi1 = corner_xi(w%mcorner(1, l))
         xi2 = corner_xi(w%mcorner(2, l))
-        call integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, w)
+        call integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, open_reach, w)
       end do
       w%mend(k) = w%nment
     end do slave_segments
-    call find_corner_rows(slave, master, x, reach, v, w)
+    call find_corner_rows(slave, master, x, reach, open_reach, v, w)
     call merge_uncovered(slave, v, w)
 
     ! Overlap integral of each multiplier: sum_i G1(i, j) (sum_i phi_i = 1).
@@ -621,13 +629,13 @@ contains
 
   !> Mortar segments of slave segment k against master segment l, and their
   !> contributions to G1 (g1loc) and G21 (master entries).
-  subroutine integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, w)
+  subroutine integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, open_reach, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: k, l
     real(wp), intent(in) :: xs(2, 3), nn(2, 3)
     real(wp), intent(in) :: xi1, xi2      !< slave parameters of the master ends (project_along_field)
-    real(wp), intent(in) :: reach
+    real(wp), intent(in) :: reach, open_reach   !< admitted gaps: -reach to +open_reach (build_mortar)
     type(mortar_work_t), intent(inout) :: w
     integer :: nen, nenm, nb, ib, g, a, b, cm
     real(wp) :: xm(2, 3), s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
@@ -640,12 +648,13 @@ contains
     s1 = max(xi1, xi2)
     if (s1 - s0 <= XI_SLIVER) return
     if (nen == 2 .and. nenm == 2) then
-      call integrate_overlap_line(slave%axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, w)
+      call integrate_overlap_line(slave%axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, open_reach, w)
       return
     end if
     call load_segment(master, x, l, xm)
-    ! Only a master that faces the slave, within reach, counts (tested at
-    ! the middle of the overlap: no coupling to far or back-facing parts).
+    ! Only a master that faces the slave, with a gap from -reach to
+    ! +open_reach, counts (tested at the middle of the overlap: no coupling
+    ! to far or back-facing parts).
     xi = 0.5_wp*(s0 + s1)
     call segment_point(nen, xs, xi, ps, ts)
     call normal_field(nen, nn, xi, n, dn)
@@ -653,7 +662,8 @@ contains
     eta = intersect_ray(nenm, xm, ps, n)
     call segment_point(nenm, xm, eta, pm, tm)
     if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) return
-    if (abs(dot_product(pm - ps, n)) > reach) return
+    dg = dot_product(pm - ps, n)
+    if (dg > open_reach .or. dg < -reach) return
     ! Slave nodes whose own point faces this master segment.
     do a = 1, nen
       if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
@@ -734,13 +744,13 @@ contains
   !> multiplier basis written out, so that no procedure of another module is
   !> called per Gauss point (gfortran does not inline across modules; the
   !> calls were most of the matching's time, doc/performance.md).
-  subroutine integrate_overlap_line(axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, w)
+  subroutine integrate_overlap_line(axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, open_reach, w)
     logical, intent(in) :: axisymmetric
     type(contact_surface_t), intent(in) :: master
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: k, l
     real(wp), intent(in) :: xs(2, 3), nn(2, 3)
-    real(wp), intent(in) :: s0, s1, reach
+    real(wp), intent(in) :: s0, s1, reach, open_reach
     type(mortar_work_t), intent(inout) :: w
     integer :: a, b, g, ib, np
     real(wp) :: xm1(2), xm2(2), tm(2), xi, wgt, ps(2), n(2), eta, pm(2), dg, ns(2), nm(2), psi(2), &
@@ -751,11 +761,13 @@ contains
     xm2 = x(:, master%seg(2, l))
     ! Tangent of the straight master segment: x_m'(eta) = -x_1/2 + x_2/2 (shape_line).
     tm = xm1*(-0.5_wp) + xm2*0.5_wp
-    ! Only a master that faces the slave, within reach, counts (tested at
-    ! the middle of the overlap, as integrate_overlap). The normal field
-    ! n there is not normalised: the facing test is a sign, and the reach
-    ! test |(p_m - p_s) . n| > reach |n| is taken squared (no square root
-    ! or division; the same test up to round-off at its bound).
+    ! Only a master that faces the slave, with a gap from -reach to
+    ! +open_reach, counts (tested at the middle of the overlap, as
+    ! integrate_overlap). The normal field n there is not normalised: the
+    ! facing test is a sign, and the reach test |(p_m - p_s) . n| > r |n|
+    ! (r = open_reach on the open side, reach on the closed one) is taken
+    ! squared (no square root or division; the same test up to round-off at
+    ! its bound).
     xi = 0.5_wp*(s0 + s1)
     ns = [0.5_wp*(1.0_wp - xi), 0.5_wp*(1.0_wp + xi)]
     n = nn(:, 1)*ns(1) + nn(:, 2)*ns(2)
@@ -764,7 +776,11 @@ contains
     eta = ray_line(xm1, xm2, ps, n)
     pm = xm1*(0.5_wp*(1.0_wp - eta)) + xm2*(0.5_wp*(1.0_wp + eta))
     gap = (pm(1) - ps(1))*n(1) + (pm(2) - ps(2))*n(2)
-    if (gap**2 > reach**2*(n(1)**2 + n(2)**2)) return
+    if (gap > 0.0_wp) then
+      if (gap**2 > open_reach**2*(n(1)**2 + n(2)**2)) return
+    else
+      if (gap**2 > reach**2*(n(1)**2 + n(2)**2)) return
+    end if
     ! Slave nodes whose own point faces this master segment.
     do a = 1, 2
       if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
@@ -944,12 +960,16 @@ contains
   !> shrinks, the moving constraint does work lambda psi(xi_c) g(xi_c)
   !> dxi_c/dt on the bodies (energy given back; doc/verification.md section
   !> 13). A point row for each end corner of an open master that projects
-  !> strictly inside a slave segment (along the slave normal field, within
-  !> reach, the master's end segment facing the slave) keeps g(xi_c) >= 0.
-  subroutine find_corner_rows(slave, master, x, reach, vl, w)
+  !> strictly inside a slave segment (along the slave normal field, with a
+  !> gap from -reach to +open_reach as the overlaps in integrate_overlap, the
+  !> master's end segment facing the slave) keeps g(xi_c) >= 0. A corner
+  !> farther open gets no row: its row would mark the slave segment below it
+  !> as one where the master ends (merge_uncovered), where the overlap in
+  !> fact ends because the master is out of reach.
+  subroutine find_corner_rows(slave, master, x, reach, open_reach, vl, w)
     type(contact_surface_t), intent(in) :: slave, master
     real(wp), intent(in) :: x(:,:)
-    real(wp), intent(in) :: reach
+    real(wp), intent(in) :: reach, open_reach
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     integer :: t, k, a, l, cn, nen, kbest, tn
@@ -994,6 +1014,7 @@ contains
         call normal_field(nen, nn, xi, n, dn)
         n = n/max(sqrt(n(1)**2 + n(2)**2), tiny(1.0_wp))
         g = dot_product(pc - ps, n)
+        if (g >= open_reach) cycle
         if (abs(g) >= best) cycle
         if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) cycle
         best = abs(g)

@@ -85,7 +85,7 @@ contains
     if (present(corners)) w%corners = corners
     allocate(du(2, mesh%nnode), source=0.0_wp)
     call verlet_init(verlet, slave, master, .true., 0.25_wp)
-    call build_mortar(slave, master, mesh%x, mesh%x, du, 0.25_wp, mult, verlet, cs, w)
+    call build_mortar(slave, master, mesh%x, mesh%x, du, 0.25_wp, 0.25_wp, mult, verlet, cs, w)
   end subroutine coupling
 
   !> G1(i, j) in slave chain numbering (i, j chain positions) from the rows.
