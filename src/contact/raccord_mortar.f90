@@ -393,7 +393,7 @@ contains
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
     integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr, pn, sl
-    logical :: fold
+    logical :: fold, take
     real(wp) :: v, tol, g1col(-G1_MAX_BAND:G1_MAX_BAND)
 
     nen = slave%nen_seg
@@ -464,8 +464,11 @@ contains
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
             ! (dirs: an entry whose G1 vanishes, by symmetry on a straight
-            ! edge, keeps its vector weight, which need not on a curved one)
-            if (v /= 0.0_wp .or. dirs_entry(ai, b, k)) then
+            ! edge, keeps its vector weight, which need not on a curved one;
+            ! tested only where v = 0, without a call per entry)
+            take = v /= 0.0_wp
+            if (.not. take .and. w%dirs) take = w%g1vec(1, ai, b, k) /= 0.0_wp .or. w%g1vec(2, ai, b, k) /= 0.0_wp
+            if (take) then
               ! put(slave%seg(ai, k), -v), written out here and below (the
               ! internal procedure was not inlined: a call per entry)
               pn = slave%seg(ai, k)
@@ -556,14 +559,6 @@ contains
     end do
     cs%g1_band = band
   contains
-    !> With per-entry directions, the vector weight of slave node ai of
-    !> segment kk in multiplier bb's row is not zero.
-    logical function dirs_entry(ai_, bb, kk)
-      integer, intent(in) :: ai_, bb, kk
-      dirs_entry = .false.
-      if (w%dirs) dirs_entry = w%g1vec(1, ai_, bb, kk) /= 0.0_wp .or. w%g1vec(2, ai_, bb, kk) /= 0.0_wp
-    end function dirs_entry
-
     !> Chain position of the q-th node in constraint order: along the
     !> chain from cfirst, or folded (the chain's q-th node from the start
     !> for odd q, from the end for even q).
