@@ -11,6 +11,17 @@
 !>   contact force   f_p    = sum_j w_jp (lambda_j n_j + tau_j t_j)
 !> and the paper's conditions (19) bear on the nodal gap G1^-1 g_w and the
 !> weighted multipliers G1 lambda. Node-to-segment is the case G1 = I.
+!>
+!> Per-entry directions (`entry_dirs`, chosen once per pair: mortar with
+!> corner multipliers on 3-node slave edges, raccord_mortar): each entry
+!> carries its own vector weight W_jp = w_jp nu_jp, the exact first
+!> variation of the row's weighted gap int psi_j (x_m - x_s) . nu dGamma
+!> (nu the master's normal, doc/theory-contact.md section 7), instead of
+!> w_jp n_j with one direction per row; with W^perp = W turned clockwise
+!>   g_w(j) = sum_p W_jp . x_p,  s_w(j) = sum_p W^perp_jp . du_p,
+!>   f_p    = sum_j (lambda_j W_jp + tau_j W^perp_jp).
+!> The scalar w_jp stays G1's entry (the conditions); rows without
+!> per-entry directions keep their arithmetic exactly.
 module raccord_constraint_set
   use raccord_kinds, only: wp
   implicit none
@@ -38,6 +49,9 @@ module raccord_constraint_set
     integer :: nent = 0
     integer, allocatable :: ent_node(:)
     real(wp), allocatable :: ent_w(:)
+    !> Entries carry their own vector weights ent_v (above); set by cs_start.
+    logical :: entry_dirs = .false.
+    real(wp), allocatable :: ent_v(:,:)       !< (2, nent) W_jp, with entry_dirs only
     real(wp), allocatable :: gap_w(:)         !< weighted gap at the predicted positions
     real(wp), allocatable :: slip_w(:)        !< weighted slip of the predicted increment
     real(wp), allocatable :: length(:)        !< length the multiplier acts on (for stresses)
@@ -48,14 +62,20 @@ module raccord_constraint_set
 
 contains
 
-  !> Start a new set with room for up to `mcap` constraints (grow-only buffers).
-  subroutine cs_start(cs, mcap)
+  !> Start a new set with room for up to `mcap` constraints (grow-only
+  !> buffers); `entry_dirs`: the entries carry vector weights (ent_v).
+  subroutine cs_start(cs, mcap, entry_dirs)
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: mcap
+    logical, intent(in), optional :: entry_dirs
+    cs%entry_dirs = .false.
+    if (present(entry_dirs)) cs%entry_dirs = entry_dirs
     if (.not. allocated(cs%snode)) then
       call grow(cs, max(mcap, 1), max(8*mcap, 8))
     else if (size(cs%snode) < mcap) then
       call grow(cs, mcap, max(size(cs%ent_node), 8*mcap))
+    else if (cs%entry_dirs .and. .not. allocated(cs%ent_v)) then
+      call grow(cs, size(cs%snode), size(cs%ent_node))
     end if
     cs%m = 0
     cs%nent = 0
@@ -96,6 +116,7 @@ contains
     do e = cs%row_ptr(cs%m), cs%nent
       if (cs%ent_node(e) == p) then
         cs%ent_w(e) = cs%ent_w(e) + w
+        if (cs%entry_dirs) cs%ent_v(:, e) = cs%ent_v(:, e) + w*cs%normal(:, cs%m)
         return
       end if
     end do
@@ -103,6 +124,8 @@ contains
     cs%nent = cs%nent + 1
     cs%ent_node(cs%nent) = p
     cs%ent_w(cs%nent) = w
+    ! A row added entry by entry has one direction, the row's normal.
+    if (cs%entry_dirs) cs%ent_v(:, cs%nent) = w*cs%normal(:, cs%m)
   end subroutine cs_add_entry
 
   !> Close the open row: weighted gap and slip from positions x and increments du.
@@ -114,6 +137,10 @@ contains
     cs%row_ptr(j + 1) = cs%nent + 1
     cs%gap_w(j) = 0.0_wp
     cs%slip_w(j) = 0.0_wp
+    if (cs%entry_dirs) then
+      call vector_sums(cs, j, x, du)
+      return
+    end if
     do e = cs%row_ptr(j), cs%nent
       p = cs%ent_node(e)
       cs%gap_w(j) = cs%gap_w(j) + cs%ent_w(e)*dot_product(x(:, p), cs%normal(:, j))
@@ -121,13 +148,35 @@ contains
     end do
   end subroutine cs_finish_row
 
+  !> Weighted gap and slip of row j from the entries' vector weights:
+  !> g_w = sum_p W_jp . x_p, s_w = sum_p W^perp_jp . du_p (module header).
+  subroutine vector_sums(cs, j, x, du)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: j
+    real(wp), intent(in) :: x(:,:), du(:,:)
+    integer :: e, p
+    real(wp) :: gap, slip, v1, v2
+    gap = 0.0_wp
+    slip = 0.0_wp
+    do e = cs%row_ptr(j), cs%row_ptr(j + 1) - 1
+      p = cs%ent_node(e)
+      v1 = cs%ent_v(1, e)
+      v2 = cs%ent_v(2, e)
+      gap = gap + (v1*x(1, p) + v2*x(2, p))
+      slip = slip + (v2*du(1, p) - v1*du(2, p))
+    end do
+    cs%gap_w(j) = gap
+    cs%slip_w(j) = slip
+  end subroutine vector_sums
+
   !> A whole row at once: cs_add_row, cs_add_entry for each (node(e),
   !> w(e)) with w(e) /= 0 in order, and cs_finish_row, with the same sums
   !> in the same order; a repeated node is merged by a search over this
   !> row's entries only. With `merged` the entries are distinct already
   !> (merged by the caller in the order cs_add_entry would have) and are
-  !> written as they are, zeros included.
-  subroutine cs_put_row(cs, snode, gnode, normal, length, coord, node, w, x, du, merged)
+  !> written as they are, zeros included. With cs%entry_dirs, `wv(:, e)` is
+  !> the vector weight of entry e (merged given), or, absent, w(e) normal.
+  subroutine cs_put_row(cs, snode, gnode, normal, length, coord, node, w, x, du, merged, wv)
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: snode, gnode
     real(wp), intent(in) :: normal(2), length, coord
@@ -135,6 +184,7 @@ contains
     real(wp), intent(in) :: w(:)
     real(wp), intent(in) :: x(:,:), du(:,:)
     logical, intent(in), optional :: merged
+    real(wp), intent(in), optional :: wv(:,:)
     integer :: e, f, j, p, e0
     real(wp) :: tangent(2), gap, slip
     logical :: as_is
@@ -165,6 +215,19 @@ contains
       end do entries
     end if
     cs%row_ptr(j + 1) = cs%nent + 1
+    if (cs%entry_dirs) then
+      if (present(wv) .and. as_is) then
+        do e = 1, size(node)
+          cs%ent_v(:, e0 + e - 1) = wv(:, e)
+        end do
+      else
+        do e = e0, cs%nent
+          cs%ent_v(:, e) = cs%ent_w(e)*normal
+        end do
+      end if
+      call vector_sums(cs, j, x, du)
+      return
+    end if
     tangent = [normal(2), -normal(1)]
     gap = 0.0_wp
     slip = 0.0_wp
@@ -181,7 +244,7 @@ contains
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: mcap, ecap
     integer, allocatable :: ti(:)
-    real(wp), allocatable :: tr(:)
+    real(wp), allocatable :: tr(:), tv(:,:)
     logical :: small
     small = .true.
     if (allocated(cs%snode)) small = size(cs%snode) < mcap
@@ -195,7 +258,11 @@ contains
     end if
     if (.not. allocated(cs%ent_node)) then
       allocate(cs%ent_node(ecap), cs%ent_w(ecap))
-    else if (size(cs%ent_node) < ecap) then
+      if (cs%entry_dirs) allocate(cs%ent_v(2, ecap))
+    else if (cs%entry_dirs .and. .not. allocated(cs%ent_v)) then
+      allocate(cs%ent_v(2, max(ecap, size(cs%ent_node))))
+    end if
+    if (size(cs%ent_node) < ecap) then
       ! Keep the entries written so far: rows are built in place.
       allocate(ti(ecap))
       ti(1:cs%nent) = cs%ent_node(1:cs%nent)
@@ -203,6 +270,13 @@ contains
       allocate(tr(ecap))
       tr(1:cs%nent) = cs%ent_w(1:cs%nent)
       call move_alloc(tr, cs%ent_w)
+    end if
+    if (allocated(cs%ent_v)) then
+      if (size(cs%ent_v, 2) < size(cs%ent_node)) then
+        allocate(tv(2, size(cs%ent_node)))
+        tv(:, 1:cs%nent) = cs%ent_v(:, 1:cs%nent)
+        call move_alloc(tv, cs%ent_v)
+      end if
     end if
   end subroutine grow
 end module raccord_constraint_set

@@ -140,11 +140,12 @@ contains
         pair%weighted = spec%weighted
         pair%mortar%weighted = spec%weighted
         ! Q8 corner multipliers (edge_multipliers = 'corners', opt-in): they
-        ! remove the Fig. 4(b) stick zigzag but give energy where the contact
-        ! edge moves over a curved master (a row drives the mid nodes of two
-        ! edges along one direction; doc/reproduction.md, "The Q8 stick
-        ! zigzag: corner multipliers on curved surfaces"). Default: every
-        ! trace node.
+        ! remove the Fig. 4(b) stick zigzag; their rows carry per-entry
+        ! directions (raccord_constraint_set), without which they gave
+        ! energy where the contact edge moves over a curved master. Not the
+        ! default: on a curved slave under the paper's conditions contact
+        ! still gives energy (doc/reproduction.md, "The Q8 stick zigzag:
+        ! per-entry directions"). Default: every trace node.
         pair%mortar%corners = spec%corners
         if (spec%corners .and. pair%slave%nen_seg /= 3) call log_warn('contact', where // &
           ': edge_multipliers = ''corners'' has no effect on a slave of 2-node edges (Q4), whose multipliers ' // &
@@ -518,9 +519,15 @@ contains
     pair%overlap_node_id = 0
     do j = 1, pair%cs%m
       g0 = pair%cs%gap_w(j)
-      do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
-        g0 = g0 - pair%cs%ent_w(e)*dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%normal(:, j))
-      end do
+      if (pair%cs%entry_dirs) then
+        do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+          g0 = g0 - dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%ent_v(:, e))
+        end do
+      else
+        do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+          g0 = g0 - pair%cs%ent_w(e)*dot_product(pair%dcur(:, pair%cs%ent_node(e)), pair%cs%normal(:, j))
+        end do
+      end if
       ov = -g0/sum(pair%cs%g1(:, j))
       if (pair%cs%snode(j) > pair%slave%nnode) cycle      ! a master corner, not a slave node
       if (ov > tol) then
@@ -569,25 +576,29 @@ contains
       pair%ft(2, p) = 0.0_wp
     end do
     nt = 0
-    do j = 1, pair%cs%m
-      fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
-      tvec = pair%work%tau(j)*pair%cs%tangent(:, j)
-      do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
-        p = pair%cs%ent_node(e)
-        if (.not. pair%mark(p)) then
-          pair%mark(p) = .true.
-          nt = nt + 1
-          pair%touched(nt) = p
-          pair%fc(1, p) = 0.0_wp
-          pair%fc(2, p) = 0.0_wp
-          pair%ft(1, p) = 0.0_wp
-          pair%ft(2, p) = 0.0_wp
-        end if
-        pair%fc(:, p) = pair%fc(:, p) + pair%cs%ent_w(e)*fvec
-        ! Frictionless: tau = 0 and ft stays 0 (its work below adds zeros).
-        if (pair%mu > 0.0_wp) pair%ft(:, p) = pair%ft(:, p) + pair%cs%ent_w(e)*tvec
+    if (pair%cs%entry_dirs) then
+      call entry_forces(pair, nt)
+    else
+      do j = 1, pair%cs%m
+        fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
+        tvec = pair%work%tau(j)*pair%cs%tangent(:, j)
+        do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+          p = pair%cs%ent_node(e)
+          if (.not. pair%mark(p)) then
+            pair%mark(p) = .true.
+            nt = nt + 1
+            pair%touched(nt) = p
+            pair%fc(1, p) = 0.0_wp
+            pair%fc(2, p) = 0.0_wp
+            pair%ft(1, p) = 0.0_wp
+            pair%ft(2, p) = 0.0_wp
+          end if
+          pair%fc(:, p) = pair%fc(:, p) + pair%cs%ent_w(e)*fvec
+          ! Frictionless: tau = 0 and ft stays 0 (its work below adds zeros).
+          if (pair%mu > 0.0_wp) pair%ft(:, p) = pair%ft(:, p) + pair%cs%ent_w(e)*tvec
+        end do
       end do
-    end do
+    end if
     ! Nodes of the slave surface not touched this step carry no force (fc
     ! was zeroed at the last step's nodes above and is set at this step's).
     pair%force_lo = pair%slave%nnode + 1
@@ -644,4 +655,35 @@ contains
     state%energy%contact = state%energy%contact + wc
     state%energy%friction = state%energy%friction + wf
   end subroutine apply_correction
+
+  !> The contact forces of apply_correction for entries with their own
+  !> vector weights W (cs%entry_dirs, raccord_constraint_set):
+  !> f_p = sum_j (lambda_j W_jp + tau_j W^perp_jp), the gradient of the
+  !> rows' weighted gaps and slips; the touched nodes listed as there.
+  subroutine entry_forces(pair, nt)
+    type(contact_pair_t), intent(inout) :: pair
+    integer, intent(inout) :: nt
+    integer :: j, e, p
+    real(wp) :: lam, tau, v(2), tv(2)
+    do j = 1, pair%cs%m
+      lam = pair%work%lam(j)
+      tau = pair%work%tau(j)
+      do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+        p = pair%cs%ent_node(e)
+        if (.not. pair%mark(p)) then
+          pair%mark(p) = .true.
+          nt = nt + 1
+          pair%touched(nt) = p
+          pair%fc(1, p) = 0.0_wp
+          pair%fc(2, p) = 0.0_wp
+          pair%ft(1, p) = 0.0_wp
+          pair%ft(2, p) = 0.0_wp
+        end if
+        v = pair%cs%ent_v(:, e)
+        tv = [v(2), -v(1)]
+        pair%fc(:, p) = pair%fc(:, p) + (lam*v + tau*tv)
+        if (pair%mu > 0.0_wp) pair%ft(:, p) = pair%ft(:, p) + tau*tv
+      end do
+    end do
+  end subroutine entry_forces
 end module raccord_contact_pair

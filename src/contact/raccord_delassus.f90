@@ -28,7 +28,7 @@ contains
     integer :: m, j, e, p, nn, ntouched, t, pos, kbs, ncap
     m = cs%m
     nn = size(minv, 2)
-    call ensure_work(w, m, nn, cs%nent)
+    call ensure_work(w, m, nn, cs%nent, cs%entry_dirs)
     ! Rows touching each node, and the band width they imply.
     ntouched = 0
     do e = 1, cs%nent
@@ -58,6 +58,22 @@ contains
         w%node_last(p) = pos + 1
       end do
     end do
+    ! Entries with their own directions (cs%entry_dirs): the vector weights
+    ! in the same lists (a second pass, so the scalar sets are untouched).
+    if (cs%entry_dirs) then
+      do t = 1, ntouched
+        p = w%touched(t)
+        w%node_last(p) = w%node_ptr(p)
+      end do
+      do j = 1, m
+        do e = cs%row_ptr(j), cs%row_ptr(j + 1) - 1
+          p = cs%ent_node(e)
+          pos = w%node_last(p)
+          w%node_v(:, pos) = cs%ent_v(:, e)
+          w%node_last(p) = pos + 1
+        end do
+      end do
+    end if
     ! A node's rows are listed in increasing order (filled row by row).
     w%kb = 0
     do t = 1, ntouched
@@ -71,7 +87,11 @@ contains
     call ensure_band(w%ktt, w%kb, m)
     kbs = ubound(w%knn, 1)
     ncap = size(w%knn, 2)
-    if (friction) then
+    if (cs%entry_dirs) then
+      call pair_sums_vectors(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
+        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_v(:, 1:cs%nent), minv, alpha, h_ratio, h, &
+        friction, w%knn, w%knt, w%ktn, w%ktt)
+    else if (friction) then
       call pair_sums_friction(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
         w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
         cs%normal(:, 1:m), cs%tangent(:, 1:m), minv, alpha, h_ratio, h, w%knn, w%knt, w%ktn, w%ktt)
@@ -220,4 +240,62 @@ contains
       end do
     end do
   end subroutine pair_sums_friction
+
+  !> delassus for entries with their own vector weights W (cs%entry_dirs):
+  !> K_nn(j, k) += W_jp . (M_p^-1 W_kp), K_nt(j, k) += W_jp . (M_p^-1 W^perp_kp),
+  !> and so on, W^perp = W turned clockwise (raccord_constraint_set); the
+  !> tangential blocks with friction only. Both orders of a pair with
+  !> their own products, as pair_sums_normal.
+  subroutine pair_sums_vectors(m, kbs, ncap, nn, nent, ntouched, touched, node_ptr, node_last, &
+      node_row, node_v, minv, alpha, h_ratio, h, friction, knn, knt, ktn, ktt)
+    integer, intent(in) :: m, kbs, ncap, nn, nent, ntouched
+    integer, intent(in) :: touched(ntouched), node_ptr(:), node_last(:), node_row(nent)
+    real(wp), intent(in) :: node_v(2, nent), minv(2, nn), alpha(nn), h_ratio, h
+    logical, intent(in) :: friction
+    real(wp), intent(inout) :: knn(-kbs:kbs, ncap), knt(-kbs:kbs, ncap)
+    real(wp), intent(inout) :: ktn(-kbs:kbs, ncap), ktt(-kbs:kbs, ncap)
+    integer :: t, p, a, b, ja, jb, d
+    real(wp) :: mi(2), na(2), ta(2), nb(2), tb(2), xa(2), ya(2), xb(2), yb(2)
+    knn(:, 1:m) = 0.0_wp
+    if (friction) then
+      knt(:, 1:m) = 0.0_wp
+      ktn(:, 1:m) = 0.0_wp
+      ktt(:, 1:m) = 0.0_wp
+    end if
+    do t = 1, ntouched
+      p = touched(t)
+      mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)
+      do a = node_ptr(p), node_last(p) - 1
+        ja = node_row(a)
+        na = node_v(:, a)
+        ta = [na(2), -na(1)]
+        xa = na*mi                 ! W_a M^-1, W^perp_a M^-1
+        ya = ta*mi
+        knn(0, ja) = knn(0, ja) + (xa(1)*na(1) + xa(2)*na(2))
+        if (friction) then
+          knt(0, ja) = knt(0, ja) + (xa(1)*ta(1) + xa(2)*ta(2))
+          ktn(0, ja) = ktn(0, ja) + (ya(1)*na(1) + ya(2)*na(2))
+          ktt(0, ja) = ktt(0, ja) + (ya(1)*ta(1) + ya(2)*ta(2))
+        end if
+        do b = a + 1, node_last(p) - 1
+          jb = node_row(b)
+          d = jb - ja
+          nb = node_v(:, b)
+          tb = [nb(2), -nb(1)]
+          xb = nb*mi
+          yb = tb*mi
+          knn(d, ja) = knn(d, ja) + (xa(1)*nb(1) + xa(2)*nb(2))
+          knn(-d, jb) = knn(-d, jb) + (xb(1)*na(1) + xb(2)*na(2))
+          if (friction) then
+            knt(d, ja) = knt(d, ja) + (xa(1)*tb(1) + xa(2)*tb(2))
+            ktn(d, ja) = ktn(d, ja) + (ya(1)*nb(1) + ya(2)*nb(2))
+            ktt(d, ja) = ktt(d, ja) + (ya(1)*tb(1) + ya(2)*tb(2))
+            knt(-d, jb) = knt(-d, jb) + (xb(1)*ta(1) + xb(2)*ta(2))
+            ktn(-d, jb) = ktn(-d, jb) + (yb(1)*na(1) + yb(2)*na(2))
+            ktt(-d, jb) = ktt(-d, jb) + (yb(1)*ta(1) + yb(2)*ta(2))
+          end if
+        end do
+      end do
+    end do
+  end subroutine pair_sums_vectors
 end module raccord_delassus

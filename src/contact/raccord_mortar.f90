@@ -81,6 +81,13 @@ module raccord_mortar
     !> &contact_pair edge_multipliers = 'corners', opt-in: doc/theory-contact-mortar.md
     !> section 1); otherwise one on every trace node
     logical :: corners = .false.
+    !> With `corners` (3-node slave edges): each row entry carries its own
+    !> direction, W_ij = int N_i psi_j nu dGamma (g1vec, ment_v), the exact
+    !> first variation of the weighted gap on a curved surface instead of
+    !> one direction per row (raccord_constraint_set; doc/theory-contact-mortar.md
+    !> section 2). Off only to measure what it does (tests).
+    logical :: entry_dirs = .true.
+    logical :: dirs = .false.                 !< this step: corners and entry_dirs on 3-node edges
     !> multiplier = 'dual': A of the current slave segment (raccord_mortar_dual)
     real(wp) :: adual(3, 3) = 0.0_wp
     integer, allocatable :: pos(:,:)          !< (3, nseg) chain position of local node a (start, end, mid)
@@ -90,6 +97,7 @@ module raccord_mortar
     real(wp), allocatable :: nrm(:,:)         !< (2, nnode) slave nodal normals (outward)
     real(wp), allocatable :: g1loc(:,:,:)     !< (3, 3, nseg) G1 contributions: (phi local i, psi local j)
     real(wp), allocatable :: nmloc(:,:,:)     !< (2, 3, nseg) integral of psi_j times the master's inward normal
+    real(wp), allocatable :: g1vec(:,:,:,:)   !< (2, 3, 3, nseg) int N_i psi_j nu dGamma (dirs only)
     real(wp), allocatable :: len(:)           !< (nnode) integral of psi_j over the overlap
     real(wp), allocatable :: trib(:)          !< (nnode) integral of phi_j over the overlap (sum_k G1(j, k))
     logical, allocatable :: covered(:)        !< (nnode) the node itself faces the master this step
@@ -115,6 +123,7 @@ module raccord_mortar
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
+    real(wp), allocatable :: ment_v(:,:)                !< (2, :) int N_a psi_j nu dGamma (dirs only)
     integer, allocatable :: cand(:)           !< candidates of the current slave segment
     ! Projections of the master corner nodes on the current slave segment,
     ! shared by the two master segments that meet at a corner, and F at the
@@ -130,6 +139,7 @@ module raccord_mortar
     integer, allocatable :: slot(:)           !< (largest global node number of the pair)
     integer, allocatable :: rnode(:)
     real(wp), allocatable :: rw(:)
+    real(wp), allocatable :: rv(:,:)          !< (2, :) the row's vector weights (dirs only)
   end type mortar_work_t
 
   public :: init_mortar, build_mortar
@@ -224,10 +234,18 @@ contains
 
     w%multiplier = multiplier
     nen = slave%nen_seg
+    ! Per-entry directions: chosen by the pair's keys (corners on 3-node
+    ! slave edges), the buffers sized once at the first step.
+    w%dirs = w%corners .and. w%entry_dirs .and. nen == 3
+    if (w%dirs .and. .not. allocated(w%g1vec)) then
+      allocate(w%g1vec(2, 3, 3, slave%nseg), source=0.0_wp)
+      allocate(w%ment_v(2, size(w%ment_node)), w%rv(2, size(w%rnode)))
+    end if
     call verlet_refresh(v, x, slave, master, reach)
     if (v%rebuilt) then
       ! The near segments change: clear what the others keep between steps.
       w%g1loc = 0.0_wp
+      if (w%dirs) w%g1vec = 0.0_wp
       w%nmloc = 0.0_wp
       w%covered = .false.
       w%len = 0.0_wp
@@ -383,12 +401,12 @@ contains
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
     integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr, pn, sl
-    logical :: fold
+    logical :: fold, take
     real(wp) :: v, tol, g1col(-G1_MAX_BAND:G1_MAX_BAND)
 
     nen = slave%nen_seg
     tol = LEN_TOL*slave%h_min
-    call cs_start(cs, slave%nnode + 2)
+    call cs_start(cs, slave%nnode + 2, w%dirs)
     cs%weighted = w%weighted
     if (vl%nnear == 0) return
     fold = .false.
@@ -453,7 +471,12 @@ contains
           ! (constraint numbering: g1(d, j) = G1(j + d, j)).
           do ai = 1, nen
             v = w%g1loc(ai, b, k)
-            if (v /= 0.0_wp) then
+            ! (dirs: an entry whose G1 vanishes, by symmetry on a straight
+            ! edge, keeps its vector weight, which need not on a curved one;
+            ! tested only where v = 0, without a call per entry)
+            take = v /= 0.0_wp
+            if (.not. take .and. w%dirs) take = w%g1vec(1, ai, b, k) /= 0.0_wp .or. w%g1vec(2, ai, b, k) /= 0.0_wp
+            if (take) then
               ! put(slave%seg(ai, k), -v), written out here and below (the
               ! internal procedure was not inlined: a call per entry)
               pn = slave%seg(ai, k)
@@ -466,7 +489,11 @@ contains
                 w%rnode(nr) = pn
                 w%rw(nr) = -v
                 w%slot(pn) = nr
+                sl = nr
+                if (w%dirs) w%rv(:, sl) = 0.0_wp
               end if
+              ! W_ij = -int N_i psi_j nu dGamma on slave nodes
+              if (w%dirs) w%rv(:, sl) = w%rv(:, sl) - w%g1vec(:, ai, b, k)
             end if
             i = w%cidx(w%pos(ai, k))
             ! 3-node edges: the conditions' G1 is that of the corners' linear
@@ -492,10 +519,19 @@ contains
               w%rnode(nr) = pn
               w%rw(nr) = w%ment_w(e)
               w%slot(pn) = nr
+              sl = nr
+              if (w%dirs) w%rv(:, sl) = 0.0_wp
             end if
+            ! W_aj = +int N_a psi_j nu dGamma on master nodes
+            if (w%dirs) w%rv(:, sl) = w%rv(:, sl) + w%ment_v(:, e)
           end do
         end do
-        if (w%weighted) then
+        if (w%dirs) then
+          ! Each entry along its own vector weight (the row's normal kept
+          ! for the row's outputs only).
+          call cs_put_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
+            xpred, du, merged=.true., wv=w%rv(:, 1:nr))
+        else if (w%weighted) then
           call cs_put_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
             xpred, du, merged=.true.)
         else
@@ -639,7 +675,7 @@ contains
     type(mortar_work_t), intent(inout) :: w
     integer :: nen, nenm, nb, ib, g, a, b, cm
     real(wp) :: xm(2, 3), s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
-      pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3), nu(2)
+      pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3), nu(2), mvec(2, 3, 3)
 
     nen = slave%nen_seg
     nenm = master%nen_seg
@@ -686,6 +722,7 @@ contains
     a = a + 1
     bounds(a) = s1
     mloc = 0.0_wp
+    if (w%dirs) mvec = 0.0_wp
     pieces: do ib = 1, a - 1
       if (bounds(ib + 1) - bounds(ib) <= XI_SLIVER) cycle
       do g = 1, 3
@@ -724,16 +761,34 @@ contains
           mloc(1:nenm, b) = mloc(1:nenm, b) + nm(1:nenm)*psi(b)*dg
           w%nmloc(:, b, k) = w%nmloc(:, b, k) + nu*psi(b)*dg
         end do
+        if (w%dirs) then
+          ! Vector weights: int N_i psi_j nu dGamma, int N_a psi_j nu dGamma
+          ! (nu the master's inward normal; raccord_constraint_set).
+          do b = 1, nen
+            do a = 1, nen
+              w%g1vec(:, a, b, k) = w%g1vec(:, a, b, k) + nu*(ns(a)*psi(b)*dg)
+            end do
+            do cm = 1, nenm
+              mvec(:, cm, b) = mvec(:, cm, b) + nu*(nm(cm)*psi(b)*dg)
+            end do
+          end do
+        end if
       end do
     end do pieces
     do b = 1, nen
       do cm = 1, nenm
-        if (mloc(cm, b) == 0.0_wp) cycle
+        ! (dirs: an entry whose G21 vanishes, by symmetry on a straight
+        ! edge, keeps its vector weight, which need not on a curved one)
+        if (mloc(cm, b) == 0.0_wp) then
+          if (.not. w%dirs) cycle
+          if (mvec(1, cm, b) == 0.0_wp .and. mvec(2, cm, b) == 0.0_wp) cycle
+        end if
         if (w%nment == size(w%ment_node)) call grow_entries(w)
         w%nment = w%nment + 1
         w%ment_node(w%nment) = master%seg(cm, l)
         w%ment_loc(w%nment) = b
         w%ment_w(w%nment) = mloc(cm, b)
+        if (w%dirs) w%ment_v(:, w%nment) = mvec(:, cm, b)
       end do
     end do
   end subroutine integrate_overlap
@@ -944,6 +999,10 @@ contains
         if (target == 0) cycle
         w%g1loc(1:nen, target, k) = w%g1loc(1:nen, target, k) + w%g1loc(1:nen, b, k)
         w%g1loc(1:nen, b, k) = 0.0_wp
+        if (w%dirs) then
+          w%g1vec(:, 1:nen, target, k) = w%g1vec(:, 1:nen, target, k) + w%g1vec(:, 1:nen, b, k)
+          w%g1vec(:, 1:nen, b, k) = 0.0_wp
+        end if
         w%nmloc(:, target, k) = w%nmloc(:, target, k) + w%nmloc(:, b, k)
         w%nmloc(:, b, k) = 0.0_wp
         do e = w%mbeg(k), w%mend(k)
@@ -1125,6 +1184,7 @@ contains
       w%nmloc(1, a, k) = 0.0_wp
       w%nmloc(2, a, k) = 0.0_wp
     end do
+    if (w%dirs) w%g1vec(:, :, :, k) = 0.0_wp
   end subroutine clear_segment
 
   subroutine load_segment(surf, x, k, xs)
@@ -1143,25 +1203,35 @@ contains
   subroutine grow_row(w)
     type(mortar_work_t), intent(inout) :: w
     integer :: cap
-    real(wp), allocatable :: tr(:)
+    real(wp), allocatable :: tr(:), tv(:,:)
     cap = 2*size(w%rnode)
     call grow_int(w%rnode, cap, size(w%rnode))
     allocate(tr(cap))
     tr(1:size(w%rw)) = w%rw
     call move_alloc(tr, w%rw)
+    if (allocated(w%rv)) then
+      allocate(tv(2, cap))
+      tv(:, 1:size(w%rv, 2)) = w%rv
+      call move_alloc(tv, w%rv)
+    end if
   end subroutine grow_row
 
   !> Double the master-entry buffers, keeping the entries written so far.
   subroutine grow_entries(w)
     type(mortar_work_t), intent(inout) :: w
     integer :: cap
-    real(wp), allocatable :: tr(:)
+    real(wp), allocatable :: tr(:), tv(:,:)
     cap = 2*size(w%ment_node)
     call grow_int(w%ment_node, cap, w%nment)
     call grow_int(w%ment_loc, cap, w%nment)
     allocate(tr(cap))
     tr(1:w%nment) = w%ment_w(1:w%nment)
     call move_alloc(tr, w%ment_w)
+    if (allocated(w%ment_v)) then
+      allocate(tv(2, cap))
+      tv(:, 1:w%nment) = w%ment_v(:, 1:w%nment)
+      call move_alloc(tv, w%ment_v)
+    end if
   end subroutine grow_entries
 
   subroutine grow_int(a, cap, keep)

@@ -28,6 +28,7 @@ module raccord_solver_work
     integer, allocatable :: node_ptr(:), node_row(:)   !< node -> row lists
     integer, allocatable :: touched(:)
     real(wp), allocatable :: node_w(:)   !< (nent) the weight of each node_row entry
+    real(wp), allocatable :: node_v(:,:) !< (2, nent) its vector weight (constraint sets with entry_dirs)
     ! Reduced (Delassus) solve: compressed active index, open list, the
     ! open multipliers in terms of the active ones (Z), the band of R.
     integer, allocatable :: ia(:), olist(:), zcnt(:), zcol(:,:)
@@ -58,9 +59,12 @@ module raccord_solver_work
 
 contains
 
-  subroutine ensure_work(w, m, nn, nent)
+  !> Size the workspace for m constraints, nn nodes and nent entries;
+  !> `vectors`: also the entries' vector weights (node_v).
+  subroutine ensure_work(w, m, nn, nent, vectors)
     type(solver_work_t), intent(inout) :: w
     integer, intent(in) :: m, nn, nent
+    logical, intent(in), optional :: vectors
     integer :: cap
     if (.not. allocated(w%node_first)) then
       allocate(w%node_first(nn), w%node_last(nn), w%node_ptr(nn), source=0)
@@ -68,6 +72,9 @@ contains
     end if
     call ensure_i(w%node_row, nent)
     call ensure1(w%node_w, nent)
+    if (present(vectors)) then
+      if (vectors) call ensure2(w%node_v, 2, nent)
+    end if
     if (allocated(w%lam)) then
       if (size(w%lam) >= m) return
     end if
