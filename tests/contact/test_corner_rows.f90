@@ -84,7 +84,7 @@ contains
     w%entry_dirs = dirs
     allocate(du(2, size(x, 2)), source=0.0_wp)
     call verlet_init(verlet, slave, master, .true., REACH)
-    call build_mortar(slave, master, x, x, du, REACH, mult, verlet, cs, w)
+    call build_mortar(slave, master, x, x, du, REACH, REACH, mult, verlet, cs, w)
   end subroutine rows_at
 
   !> Largest |W_jp - dg_j/dx_p| over the entries of every row of an
