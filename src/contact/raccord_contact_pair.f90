@@ -152,6 +152,9 @@ contains
           'sit at the corners already')
         pair%mu = spec%friction
         pair%max_iter = spec%max_iterations
+        ! the residual of (19) that ends an active-set iteration whose sets
+        ! have not settled (raccord_solver_conditions, holds_to_roundoff)
+        pair%work%tolerance = spec%tolerance
         pair%reach = spec%search_distance
         if (pair%reach <= 0.0_wp) pair%reach = max(pair%slave%h_max, pair%master%h_max)
         ! Mortar rows take in open parts of the slave up to one surface

@@ -17,11 +17,6 @@ module raccord_solver_conditions
   !> Iterations after which one change of set is taken per iteration
   !> (least_index_change; saddle form and banded friction form).
   integer, parameter, public :: LEAST_INDEX_AFTER = 30
-  !> Relative residual of (19) (condition_residual) within which an iterate
-  !> solves the conditions to round-off: the fraction of the active test's
-  !> band (GAP_ROUNDOFF).
-  real(wp), parameter :: RESIDUAL_ROUNDOFF = 1.0e-12_wp
-
   public :: least_index_change, update_sets, condition_residual, band_matvec, g1_at, g1c
   public :: holds_to_roundoff
 
@@ -57,8 +52,11 @@ contains
   end subroutine least_index_change
 
   !> After LEAST_INDEX_AFTER iterations, whether the iterate (for the sets
-  !> it was solved with, w%status) satisfies (19) to round-off: the
-  !> iteration then ends there, converged, instead of updating the sets.
+  !> it was solved with, w%status) satisfies (19) to within w%tolerance
+  !> (&contact_pair tolerance, default 1e-12: round-off, the fraction
+  !> GAP_ROUNDOFF of the active test's band), relative as in
+  !> condition_residual: the iteration then ends there, converged,
+  !> instead of updating the sets.
   !> Where a decision of update_sets falls on round-off, the sets can
   !> alternate between iterates that all solve (19): the corner node of a
   !> Q8 slave edge on the axis (axisymmetric, mortar P1) carries the length
@@ -79,7 +77,7 @@ contains
     real(wp) :: lscale, g
     holds = .false.
     if (it <= LEAST_INDEX_AFTER) return
-    if (condition_residual(cs, mu, friction, w) > RESIDUAL_ROUNDOFF) return
+    if (condition_residual(cs, mu, friction, w) > w%tolerance) return
     ! and what condition_residual leaves out: a slipping constraint slips
     ! against its tangential force (slip: T_j = mu F_j sigma_j, gt_j sigma_j <= 0)
     if (friction) then
@@ -88,7 +86,7 @@ contains
         if (w%status(j) /= ST_SLIP) cycle
         g = w%gt(j)
         if (cs%weighted .and. cs%length(j) > 0.0_wp) g = g/cs%length(j)
-        if (w%sigma(j)*g > RESIDUAL_ROUNDOFF*lscale) return
+        if (w%sigma(j)*g > w%tolerance*lscale) return
       end do
     end if
     holds = .true.

@@ -46,6 +46,12 @@ module raccord_solver_work
     real(wp), allocatable :: bc(:,:), bd(:,:), bx(:,:), be(:,:), bg(:)
     !> Use the saddle form only (tests compare the reduced forms with it).
     logical :: saddle_only = .false.
+    !> &contact_pair tolerance: the relative residual of (19) within which
+    !> an iterate whose active sets have not settled after LEAST_INDEX_AFTER
+    !> iterations ends the iteration (raccord_solver_conditions,
+    !> holds_to_roundoff). The default is the round-off bound the check
+    !> was written with (1e-12, the fraction of the active test's band).
+    real(wp) :: tolerance = 1.0e-12_wp
     integer :: border_unknowns = 0                !< border unknowns of the last solve_banded_friction
     ! Report of the last solve.
     integer :: iterations = 0

@@ -110,7 +110,7 @@ contains
         'give a length, or search_distance = 0 for automatic', err)
     else if (.not. (tolerance > 0.0_wp .and. tolerance < 1.0_wp)) then
       call bad_value(deck, blk, label, 'tolerance', 'the solver tolerance is a relative residual: it must be ' // &
-        '> 0 and < 1', 'use e.g. tolerance = 1e-10', err)
+        '> 0 and < 1', 'use e.g. tolerance = 1e-12 (the default)', err)
     else if (max_iterations < 1) then
       call bad_value(deck, blk, label, 'max_iterations', 'the iteration cap must be >= 1', &
         'use e.g. max_iterations = 200', err)
@@ -197,11 +197,11 @@ contains
       ': friction = ' // real_text(friction) // ' is above the Coulomb coefficients measured for dry contact ' // &
       '(below about 1.5); accepted: the pair slips only where the tangential traction passes ' // &
       real_text(friction) // ' times the contact pressure. If that is not meant, give the measured coefficient')
-    ! The multiplier solve is direct (banded LU) and ends when its active
-    ! sets repeat (raccord_multiplier_solver): no residual is compared.
-    if (blk%find('tolerance') > 0) call log_warn('read_deck', head(deck, blk, blk%key_line('tolerance'), &
-      label) // ': tolerance has no effect: the multiplier solve is direct and ends when its active sets ' // &
-      'repeat (max_iterations caps it); remove the key')
+    ! tolerance: the multiplier solve is direct (banded solves) and ends
+    ! when its active sets repeat, (19) then holding to round-off; where
+    ! the sets have not settled after 30 iterations, an iterate whose
+    ! residual of (19) is within tolerance ends it (holds_to_roundoff in
+    ! raccord_solver_conditions; max_iterations caps the rest).
     spec%slave = trim(slave)
     spec%master = trim(master)
     spec%friction = friction

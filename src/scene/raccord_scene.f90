@@ -124,7 +124,10 @@ module raccord_scene
     logical :: corners = .false.
     real(wp) :: friction = 0.0_wp                   !< Coulomb coefficient mu; 0 = frictionless
     real(wp) :: search_distance = 0.0_wp            !< 0 = automatic (from the surface element sizes)
-    real(wp) :: tolerance = 1.0e-10_wp              !< relative residual of the multiplier solve
+    !> relative residual of (19) at which the multiplier solve takes an
+    !> iterate whose active sets have not settled after 30 iterations
+    !> (raccord_solver_conditions, holds_to_roundoff); 1e-12: round-off
+    real(wp) :: tolerance = 1.0e-12_wp
     integer :: max_iterations = 200                 !< cap on solver sweeps per step
   end type contact_spec_t
 

@@ -409,7 +409,7 @@ contains
     call check(failure, s%contacts(2)%method == METHOD_NTS .and. s%contacts(2)%multiplier == MULT_P1, &
       'contact 2 method and multiplier defaults')
     call check_close(failure, s%contacts(2)%friction, 0.0_wp, 'contact 2 friction', abs_tol=0.0_wp)
-    call check_close(failure, s%contacts(2)%tolerance, 1.0e-10_wp, 'contact 2 tolerance')
+    call check_close(failure, s%contacts(2)%tolerance, 1.0e-12_wp, 'contact 2 tolerance default')
     call check(failure, s%contacts(2)%max_iterations == 200, 'contact 2 max_iterations')
   end subroutine test_full_deck
 
