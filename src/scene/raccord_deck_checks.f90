@@ -5,7 +5,7 @@ module raccord_deck_checks
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
-  use raccord_strings, only: str, lower, clipped
+  use raccord_strings, only: str, lower, clipped, text_flaw
   use raccord_deck_scan, only: deck_block_t, join_names
   use raccord_scene, only: MAX_TABLE
   implicit none
@@ -15,6 +15,10 @@ module raccord_deck_checks
   character(len=*), parameter :: TEXT_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file', &
     'format', 'name', 'elset', 'hypothesis', 'set', 'type', 'components', 'amplitude', 'slave', 'master', &
     'method', 'multiplier', 'kinematics', 'material', 'volumetric', 'conditions', 'edge_multipliers']
+
+  !> Text keys that hold a path or free text, not a name: they may be in
+  !> any encoding (a file name on disk), but hold no control characters.
+  character(len=*), parameter :: PATH_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file']
 
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
 
@@ -42,7 +46,7 @@ contains
     type(deck_block_t), intent(in) :: blk
     character(len=*), intent(in) :: known(:)
     type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: value
+    character(len=:), allocatable :: value, flaw
     integer :: k, j
     do k = 1, size(blk%keys)
       associate (key => blk%keys(k))
@@ -57,6 +61,15 @@ contains
             call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
               ''' = ' // clipped(value, MAX_ECHO) // ': text must be in quotes; write ' // key%name // ' = ''' // &
               clipped(value, MAX_ECHO) // '''')
+            return
+          end if
+          ! Names end up in the results' .xmf (XML): they must be UTF-8
+          ! without control characters; paths and the title only the latter.
+          flaw = text_flaw(value(2:max(1, len(value) - 1)), .not. any(PATH_KEYS == key%name))
+          if (len(flaw) > 0) then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''': in the text, ' // flaw // ', which the results'' .xmf (XML) cannot hold; retype the ' // &
+              'text in plain ASCII, or save the deck as UTF-8')
             return
           end if
         end if

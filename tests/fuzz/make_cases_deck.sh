@@ -1,0 +1,118 @@
+# Families of the fuzz set for what the deck's text may hold and what the
+# results can hold of it. Sourced by make_cases.sh after make_cases_files.sh;
+# uses its helpers (new_case, set_args, set_names, set_key, add_to_group,
+# edit_lines, seed_pair) and variables (seeds, cases, c).
+#
+# Families and expected exit codes:
+#   resnames names the results cannot hold: a body or support set name
+#            with '/' or '.', a name (body, pair surface) that is not
+#            UTF-8 or holds a control character, a deck file name that is
+#            not UTF-8, a body named like the block of another body with
+#            Q4 and Q8 elements (NAME_1): refused at the deck's line, so by
+#            --check too (before: --check passed and the run stopped when
+#            the results were opened, or, for the bytes, ran to exit 0 with
+#            an .xmf that is not XML); a UTF-8 name and a Latin-1 title run
+#                                                                   2, valid
+
+# ---------------------------------------------------------------- resnames
+latin1=$(printf '\351')
+for v in "slash:a/b:--check" "dot:.:" "slash-run:p/q:"; do
+  tag=${v%%:*}; rest=${v#*:}; val=${rest%%:*}; opt=${rest#*:}
+  new_case "resnames.body-$tag" resnames bad 2 "plate.nml: &body name = '$val' ${opt:+($opt)}"
+  d=$(seed_pair plate.nml)
+  set_key "$c/$d" name "'$val'"
+  set_args $opt -o out "$d"
+  set_names "key 'name'"
+done
+new_case resnames.body-latin1 resnames bad 2 "plate.nml: &body name with a Latin-1 byte (e9)"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" name "'pl${latin1}te'"
+set_args -o out "$d"
+set_names "not UTF-8"
+new_case resnames.body-control resnames bad 2 "plate.nml: &body name with a control character (01)"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" name "'pl$(printf '\001')te'"
+set_args -o out "$d"
+set_names "control character"
+new_case resnames.body-truncated-utf8 resnames bad 2 "plate.nml: &body name ending in the first byte of a 2-byte UTF-8 character"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" name "'plat$(printf '\303')'"
+set_args --check "$d"
+set_names "not UTF-8"
+new_case resnames.pair-latin1 resnames bad 2 "contact.nml and contact.msh: slave surface named with a Latin-1 byte"
+d=$(seed_pair contact.nml)
+edit_lines "$c/contact.msh" -v n="\"l${latin1}wer_top\"" '$0 == "1 5 \"lower_top\"" { $0 = "1 5 " n } { print }'
+set_key "$c/$d" slave "'l${latin1}wer_top'"
+set_args -o out "$d"
+set_names "key 'slave'"
+for v in "slash:le/ft" "dot:."; do
+  tag=${v%%:*}; val=${v#*:}
+  new_case "resnames.set-$tag" resnames bad 2 "plate.msh and plate.nml: the fixed set 'left' named '$val'"
+  d=$(seed_pair plate.nml)
+  edit_lines "$c/plate.msh" -v n="\"$val\"" '$0 == "1 2 \"left\"" { $0 = "1 2 " n } { print }'
+  set_key "$c/$d" set "'$val'"
+  set_args --check "$d"
+  set_names "key 'set'"
+done
+new_case resnames.deck-latin1 resnames bad 2 "the deck named p<e9>.nml (the .xmf names p<e9>.h5)"
+cp "$seeds/plate.nml" "$c/p${latin1}.nml"
+cp "$seeds/plate.msh" "$c/"
+set_args -o out "p${latin1}.nml"
+set_names "file name"
+new_case resnames.block-collision resnames bad 2 "body 'a' of a Q4 and a Q8 element (blocks a_1, a_2) beside a body 'a_1'"
+cat > "$c/m.msh" <<'MESH'
+$MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+2 1 "a"
+2 2 "b"
+$EndPhysicalNames
+$Nodes
+16
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+5 2 0 0
+6 3 0 0
+7 3 1 0
+8 2 1 0
+9 2.5 0 0
+10 3 0.5 0
+11 2.5 1 0
+12 2 0.5 0
+13 4 0 0
+14 5 0 0
+15 5 1 0
+16 4 1 0
+$EndNodes
+$Elements
+3
+1 3 2 1 1 1 2 3 4
+2 16 2 1 2 5 6 7 8 9 10 11 12
+3 3 2 2 3 13 14 15 16
+$EndElements
+MESH
+cat > "$c/d.nml" <<'DECK'
+&mesh file = 'm.msh' /
+&body name = 'a', young = 1e5, poisson = 0.3, density = 1e-9, velocity = 1.0, 0.0 /
+&body name = 'a_1', elset = 'b', young = 1e5, poisson = 0.3, density = 1e-9 /
+&time t_end = 1e-5 /
+&output frames = 1 /
+DECK
+set_args --check d.nml
+set_names "rename one of the two bodies"
+new_case resnames.block-other-name resnames valid 0 "body 'a' of a Q4 and a Q8 element beside a body 'a_3'"
+cp "$cases/resnames.block-collision/m.msh" "$c/"
+sed "s/'a_1'/'a_3'/" "$cases/resnames.block-collision/d.nml" > "$c/d.nml"
+set_args -o out d.nml
+new_case resnames.body-utf8 resnames valid 0 "plate.nml: &body name in UTF-8 (plâte)"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" name "'pl$(printf '\303\242')te'"
+set_args -o out "$d"
+new_case resnames.title-latin1 resnames valid 0 "plate.nml: &run title with a Latin-1 byte (free text)"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" title "'caf${latin1}'"
+set_args -o out "$d"
