@@ -20,6 +20,9 @@ module raccord_deck_checks
   !> any encoding (a file name on disk), but hold no control characters.
   character(len=*), parameter :: PATH_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file']
 
+  !> Keys that take a list of reals (velocity(2) = ... sets one entry).
+  character(len=*), parameter :: ARRAY_KEYS(*) = [character(len=16) :: 'velocity', 'body_force', 'value', 'time']
+
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
 
   !> Characters of a value quoted in a message (a longer one is cut).
@@ -73,6 +76,18 @@ contains
             return
           end if
         end if
+        if (key%subscripted .and. .not. any(ARRAY_KEYS == key%name)) then
+          call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+            ''' (' // clipped(item_text(blk, k), MAX_ECHO) // '): a subscript applies only to the list keys (' // &
+            join_names(ARRAY_KEYS) // '); ' // key%name // ' takes a single ' // &
+            trim(merge('text  ', 'number', any(TEXT_KEYS == key%name))) // ': write ' // key%name // ' = ' // &
+            trim(merge('''...''', '<x>  ', any(TEXT_KEYS == key%name))))
+          return
+        end if
+        if (any(ARRAY_KEYS == key%name)) then
+          call check_entries(deck, blk, k, label, err)
+          if (err%failed()) return
+        end if
         if (.not. key%subscripted) then
           do j = 1, k - 1
             if (blk%keys(j)%name /= key%name .or. blk%keys(j)%subscripted) cycle
@@ -84,6 +99,61 @@ contains
       end associate
     end do
   end subroutine check_keys
+
+  !> Key k of a list key sets no entry that an earlier item of the same key
+  !> set (velocity = 1.0, 2.0, velocity(1) = 5.0 kept 5.0 without a word).
+  !> Which entries an item sets is found by reading it into a probe list, so
+  !> that repeat counts (2*1.0), nulls (', 5.0') and sections (time(3:4))
+  !> count as the namelist read counts them.
+  subroutine check_entries(deck, blk, k, label, err)
+    character(len=*), intent(in) :: deck, label
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    type(error_t), intent(inout) :: err
+    logical :: mine(MAX_TABLE), theirs(MAX_TABLE)
+    integer :: j, i
+    mine = entries_set(blk, k)
+    if (.not. any(mine)) return
+    do j = 1, k - 1
+      if (blk%keys(j)%name /= blk%keys(k)%name) cycle
+      theirs = entries_set(blk, j)
+      if (.not. any(mine .and. theirs)) cycle
+      i = findloc(mine .and. theirs, .true., dim=1)
+      call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
+        blk%keys(k)%name // ''': entry ' // str(i) // ' is given twice (line ' // str(blk%keys(j)%line) // ': ' // &
+        clipped(item_text(blk, j), MAX_ECHO) // '; line ' // str(blk%keys(k)%line) // ': ' // &
+        clipped(item_text(blk, k), MAX_ECHO) // '); give each entry once')
+      return
+    end do
+  end subroutine check_entries
+
+  !> The entries of a list that item k sets (none if it does not read).
+  function entries_set(blk, k) result(set)
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    logical :: set(MAX_TABLE)
+    real(wp) :: a(MAX_TABLE)
+    namelist /probe/ a
+    character(len=:), allocatable :: record
+    integer :: ios
+    a = UNSET
+    record = '&probe a' // blk%text(blk%keys(k)%first + len(blk%keys(k)%name):blk%keys(k)%last) // ' /'
+    read(record, nml=probe, iostat=ios)
+    set = a /= UNSET .and. ios == 0
+  end function entries_set
+
+  !> Item k as written, subscript included, without a trailing comma.
+  pure function item_text(blk, k) result(item)
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    character(len=:), allocatable :: item
+    integer :: n
+    item = trim(adjustl(blk%text(blk%keys(k)%first:blk%keys(k)%last)))
+    n = len(item)
+    if (n > 0) then
+      if (item(n:n) == ',') item = trim(item(1:n-1))
+    end if
+  end function item_text
 
   !> The values of key k did not read as the key's type.
   subroutine unreadable(deck, blk, k, label, iomsg, err)

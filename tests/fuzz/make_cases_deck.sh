@@ -13,6 +13,14 @@
 #            the results were opened, or, for the bytes, ran to exit 0 with
 #            an .xmf that is not XML); a UTF-8 name and a Latin-1 title run
 #                                                                   2, valid
+#   subscript an entry of a list key given twice (velocity = 1.0, 2.0,
+#            velocity(1) = 5.0; value(1) twice; a repeat count 2*1.0 then
+#            velocity(2); an amplitude time(1) after the whole table): the
+#            last one won without a word; a subscript on a key that is not
+#            a list (name(1:1) = 'q' changed one letter of the name, title
+#            and set too): refused naming both items. Entries set once each,
+#            a null entry set later and a table extended by time(3) run
+#                                                                   2, valid
 
 # ---------------------------------------------------------------- resnames
 latin1=$(printf '\351')
@@ -115,4 +123,37 @@ set_args -o out "$d"
 new_case resnames.title-latin1 resnames valid 0 "plate.nml: &run title with a Latin-1 byte (free text)"
 d=$(seed_pair plate.nml)
 set_key "$c/$d" title "'caf${latin1}'"
+set_args -o out "$d"
+
+# ---------------------------------------------------------------- subscript
+# sub_case NAME KIND EXPECT NOTE DECK KEY VALUE [NAMES]
+sub_case() {
+  new_case "subscript.$1" subscript "$2" "$3" "$4"
+  d=$(seed_pair "$5")
+  set_key "$c/$d" "$6" "$7"
+  set_args -o out "$d"
+  [ -n "${8:-}" ] && set_names "$8"
+  return 0
+}
+sub_case velocity-whole-then-1 bad 2 "plate.nml: velocity = 1.0, 2.0, velocity(1) = 5.0" plate.nml velocity "1.0, 2.0, velocity(1) = 5.0" "entry 1 is given twice"
+sub_case velocity-2-twice bad 2 "plate.nml: velocity(2) = 1.0, velocity(2) = 3.0" plate.nml velocity "0.0, velocity(2) = 1.0, velocity(2) = 3.0" "entry 2 is given twice"
+sub_case velocity-repeat-then-2 bad 2 "plate.nml: velocity = 2*1.0, velocity(2) = 5.0" plate.nml velocity "2*1.0, velocity(2) = 5.0" "entry 2 is given twice"
+sub_case body_force-section bad 2 "plate.nml: body_force = 0.0, -1.0e-3, body_force(1:2) = 1.0, 1.0" plate.nml body_force "0.0, -1.0e-3, body_force(1:2) = 1.0, 1.0" "entry 1 is given twice"
+sub_case time-whole-then-1 bad 2 "plate.nml: &amplitude time = 0.0, 2.0e-6, time(1) = 1.0e-6" plate.nml time "0.0, 2.0e-6, time(1) = 1.0e-6" "entry 1 is given twice"
+new_case subscript.value-1-twice subscript bad 2 "plate_q8.nml: &boundary 'right' value(1) = 1.0e-3, value(1:2) = 2.0e-3, 0.0"
+d=$(seed_pair plate_q8.nml)
+edit_lines "$c/$d" '{ sub(/value\(1\) = 1.0e-3/, "value(1) = 1.0e-3, value(1:2) = 2.0e-3, 0.0") } { print }'
+must_differ "$c/$d"
+set_args -o out "$d"
+set_names "entry 1 is given twice"
+sub_case name-substring bad 2 "plate.nml: &body name = 'plate', name(1:1) = 'q' (made 'qlate')" plate.nml name "'plate', name(1:1) = 'q'" "subscript applies only"
+sub_case title-substring bad 2 "plate.nml: &run title(1:5) = 'hello'" plate.nml title "'x', title(1:5) = 'hello'" "subscript applies only"
+sub_case set-substring bad 2 "plate.nml: &boundary set = 'left', set(1:1) = 'r' (made 'reft')" plate.nml set "'left', set(1:1) = 'r'" "subscript applies only"
+sub_case poisson-subscript bad 2 "plate.nml: &body poisson(1) = 0.3" plate.nml poisson "0.3, poisson(1) = 0.3" "subscript applies only"
+sub_case velocity-1-then-2 valid 0 "plate.nml: velocity = 1.0, velocity(2) = 5.0" plate.nml velocity "1.0, velocity(2) = 5.0"
+sub_case velocity-null-then-1 valid 0 "plate.nml: velocity = , 1.0, velocity(1) = 5.0" plate.nml velocity ", 1.0, velocity(1) = 5.0"
+new_case subscript.time-extended subscript valid 0 "plate.nml: &amplitude time = 0.0, 2.0e-6, time(3) = 3.0e-6, value(3) = 1.0"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" time "0.0, 2.0e-6, time(3) = 3.0e-6"
+set_key "$c/$d" value "0.0, 1.0, value(3) = 1.0"
 set_args -o out "$d"
