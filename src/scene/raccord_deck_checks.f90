@@ -23,6 +23,11 @@ module raccord_deck_checks
   !> Keys that take a list of reals (velocity(2) = ... sets one entry).
   character(len=*), parameter :: ARRAY_KEYS(*) = [character(len=16) :: 'velocity', 'body_force', 'value', 'time']
 
+  !> Keys that take a logical, and the forms of a logical value they take.
+  character(len=*), parameter :: LOGICAL_KEYS(*) = [character(len=16) :: 'stress']
+  character(len=*), parameter :: LOGICAL_WORDS(*) = [character(len=7) :: '.true.', '.false.', 't', 'f', &
+    '.t.', '.f.', 'true', 'false']
+
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
 
   !> Characters of a value quoted in a message (a longer one is cut).
@@ -73,6 +78,19 @@ contains
             call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
               ''': in the text, ' // flaw // ', which the results'' .xmf (XML) cannot hold; retype the ' // &
               'text in plain ASCII, or save the deck as UTF-8')
+            return
+          end if
+        end if
+        ! Fortran reads any word that starts with t or f (after an
+        ! optional '.') as a logical: stress = full was .false., stress =
+        ! tensor .true. Only the forms of true and false are taken.
+        if (any(LOGICAL_KEYS == key%name)) then
+          value = lower(blk%value_text(k))
+          if (.not. any(LOGICAL_WORDS == value)) then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''' = ' // clipped(blk%value_text(k), MAX_ECHO) // ': not a logical value (Fortran would read ' // &
+              'any word that starts with t as true and with f as false); write ' // key%name // &
+              ' = .true. or ' // key%name // ' = .false.')
             return
           end if
         end if

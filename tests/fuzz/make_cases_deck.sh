@@ -21,6 +21,10 @@
 #            and set too): refused naming both items. Entries set once each,
 #            a null entry set later and a table extended by time(3) run
 #                                                                   2, valid
+#   logical  &output stress = a word that is not true or false (tomato,
+#            full, fish, .trueish., yes, 0): refused (Fortran reads any
+#            word starting with t or f as a logical, so stress = full gave
+#            .false. without a word); T, .t., true, .FALSE. run    2, valid
 
 # ---------------------------------------------------------------- resnames
 latin1=$(printf '\351')
@@ -157,3 +161,18 @@ d=$(seed_pair plate.nml)
 set_key "$c/$d" time "0.0, 2.0e-6, time(3) = 3.0e-6"
 set_key "$c/$d" value "0.0, 1.0, value(3) = 1.0"
 set_args -o out "$d"
+
+# ---------------------------------------------------------------- logical
+for w in tomato full fish .trueish. yes 0; do
+  new_case "logical.stress-$w" logical bad 2 "plate.nml: &output stress = $w"
+  d=$(seed_pair plate.nml)
+  set_key "$c/$d" stress "$w"
+  set_args -o out "$d"
+  set_names "not a logical value"
+done
+for w in T .t. true .FALSE.; do
+  new_case "logical.stress-valid-$w" logical valid 0 "plate.nml: &output stress = $w"
+  d=$(seed_pair plate.nml)
+  set_key "$c/$d" stress "$w"
+  set_args -o out "$d"
+done
