@@ -26,6 +26,11 @@
 #            word starting with t or f as a logical, so stress = full gave
 #            .false. without a word); T, .t., true, .FALSE. run    2, valid
 
+#   stepfix  a step count above 2^53 from a tiny dt (1e-320) or safety
+#            (1e-300), or a huge t_end: the message named only "shorten
+#            t_end"; it now names what to change (dt, safety, or t_end and
+#            the units behind the stable step)                           2
+
 # ---------------------------------------------------------------- resnames
 latin1=$(printf '\351')
 for v in "slash:a/b:--check" "dot:.:" "slash-run:p/q:"; do
@@ -176,3 +181,20 @@ for w in T .t. true .FALSE.; do
   set_key "$c/$d" stress "$w"
   set_args -o out "$d"
 done
+
+# ---------------------------------------------------------------- stepfix
+new_case stepfix.dt-1e-320 stepfix bad 2 "plate.nml: &time dt = 1e-320 (a subnormal step)"
+d=$(seed_pair plate.nml)
+add_to_group "$c/$d" time "dt = 1e-320"
+set_args --check "$d"
+set_names "give a larger &time dt"
+new_case stepfix.safety-1e-300 stepfix bad 2 "plate.nml: &time safety = 1e-300"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" safety "1e-300"
+set_args --check "$d"
+set_names "raise &time safety"
+new_case stepfix.t_end-1e25 stepfix bad 2 "plate_q8.nml: &time t_end = 1e25 (the default safety)"
+d=$(seed_pair plate_q8.nml)
+set_key "$c/$d" t_end "1e25"
+set_args --check "$d"
+set_names "even safety = 1 would not do"
