@@ -8,7 +8,7 @@
 !> syntax well enough to report those with the file, line, group and key;
 !> raccord_deck then reads each key's values with an internal namelist read.
 !>
-!> Syntax handled: '&name' opens a group, '/' closes it; text in '...' or
+!> Syntax handled: '&name' opens a group, '/' (or '&end') closes it; text in '...' or
 !> "..." (a doubled quote stands for itself) is opaque, so '/', '!' and '='
 !> inside quotes are data; '!' outside quotes starts a comment to the end of
 !> the line; a key is a name, optionally subscripted, followed by '='.
@@ -178,6 +178,12 @@ contains
             cycle chars
           end if
           if (c == '!') exit chars
+          if (c == '/' .and. nblock > 0) then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''/'' closes a group, but no ' // &
+              'group is open here (&' // blocks(nblock)%group // ' of line ' // str(blocks(nblock)%line) // &
+              ' was closed before); remove this ''/''')
+            exit lines
+          end if
           if (c /= '&') then
             call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': text outside a group: ''' // &
               shorten(line(i:)) // '''; put every key = value between &group and ''/'' (or comment it out with ''!'')')
@@ -192,6 +198,11 @@ contains
           if (len(name) == 0) then
             call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''&'' without a group name; ' // &
               'write the group name right after it, e.g. &mesh')
+            exit lines
+          end if
+          if (name == 'end') then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''&end'' closes a group, but no ' // &
+              'group is open here (the last one was closed before); remove the ''&end''')
             exit lines
           end if
           if (.not. any(known_groups == name)) then
@@ -252,6 +263,28 @@ contains
           call find_keys(path, blocks(nblock), err)
           if (err%failed()) exit lines
         case ('&')
+          ! '&end' closes a group as '/' does (an older namelist form,
+          ! which gfortran reads too)
+          if (i + 3 <= len(line)) then
+            if (lower(line(i+1:i+3)) == 'end') then
+              j = i + 4
+              if (j > len(line)) then
+                c = ' '
+              else
+                c = line(j:j)
+              end if
+              if (.not. is_name_char(c)) then
+                call append_segment(blocks(nblock), seg_text, seg_mask, lnum)
+                seg_text = ''
+                seg_mask = ''
+                in_group = .false.
+                call find_keys(path, blocks(nblock), err)
+                if (err%failed()) exit lines
+                i = j
+                cycle chars
+              end if
+            end if
+          end if
           if (i < len(line)) then
             if (is_letter(line(i+1:i+1))) then
               call raise_error(err, EXIT_INPUT, path // ':' // str(blocks(nblock)%line) // ': &' // &

@@ -52,7 +52,8 @@
 #   make_cases_features.sh (axi, finite, plastic, pairs, loops, mscale,
 #   abaqus, gmshphys, restart, fmutate), described there, and of
 #   make_cases_names.sh (names, bounds), make_cases_files.sh (special,
-#   longtext, manysets, inpgeom, ...) and make_cases_deck.sh (resnames, subscript, logical, stepfix).
+#   longtext, manysets, inpgeom, ...) and make_cases_deck.sh
+#   (resnames, subscript, logical, stepfix, deckend).
 set -u
 LC_ALL=C
 export LC_ALL

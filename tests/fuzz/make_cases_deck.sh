@@ -31,6 +31,12 @@
 #            t_end"; it now names what to change (dt, safety, or t_end and
 #            the units behind the stable step)                           2
 
+#   deckend  '&end' closing a group (the older namelist form gfortran reads
+#            too) runs like '/' (it was "the group is not closed by '/'");
+#            a second '/' or an '&end' after a closed group is refused as
+#            closing no group (it was "text outside a group: '/'" or
+#            "unknown group '&end'")                               2, valid
+
 # ---------------------------------------------------------------- resnames
 latin1=$(printf '\351')
 for v in "slash:a/b:--check" "dot:.:" "slash-run:p/q:"; do
@@ -198,3 +204,23 @@ d=$(seed_pair plate_q8.nml)
 set_key "$c/$d" t_end "1e25"
 set_args --check "$d"
 set_names "even safety = 1 would not do"
+
+# ---------------------------------------------------------------- deckend
+new_case deckend.plate.nml.end-every-group deckend valid 0 "plate.nml: every group closed by &end instead of /"
+d=$(seed_pair plate.nml)
+edit_lines "$c/$d" '$0 == "/" { $0 = "&end" } { print }'
+set_args -o out "$d"
+new_case deckend.plate_q8.nml.END-inline deckend valid 0 "plate_q8.nml: one-line groups closed by &END (a comment after it)"
+d=$(seed_pair plate_q8.nml)
+edit_lines "$c/$d" '/^&[a-z]/ && / \/$/ { sub(/ \/$/, " \&END ! closed") } { print }'
+set_args -o out "$d"
+new_case deckend.plate.nml.end-after-slash deckend bad 2 "plate.nml: '&end' after the '/' of &run"
+d=$(seed_pair plate.nml)
+edit_lines "$c/$d" '$0 == "/" && !done { print; $0 = "&end"; done = 1 } { print }'
+set_args -o out "$d"
+set_names "no group is open"
+new_case deckend.plate.nml.slash-twice deckend bad 2 "plate.nml: '//' closing &run"
+d=$(seed_pair plate.nml)
+edit_lines "$c/$d" '$0 == "/" && !done { $0 = "//"; done = 1 } { print }'
+set_args -o out "$d"
+set_names "no group is open"
