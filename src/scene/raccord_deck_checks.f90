@@ -65,6 +65,14 @@ contains
         end if
         if (any(TEXT_KEYS == key%name)) then
           value = blk%value_text(k)
+          if (len(typographic_quote(value)) > 0) then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''' = ' // clipped(value, MAX_ECHO) // ': the text is in typographic quotes (' // &
+              typographic_quote(value) // ', as a word processor or a web page writes them), which Fortran ' // &
+              'does not take for quotes; write ' // key%name // ' = ''' // clipped(unquoted(value), MAX_ECHO) // &
+              ''' with the plain quote '' (or ")')
+            return
+          end if
           if (value(1:1) /= '''' .and. value(1:1) /= '"') then
             call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
               ''' = ' // clipped(value, MAX_ECHO) // ': text must be in quotes; write ' // key%name // ' = ''' // &
@@ -172,6 +180,51 @@ contains
       if (item(n:n) == ',') item = trim(item(1:n-1))
     end if
   end function item_text
+
+  !> The typographic quote a text starts with ('' if none): UTF-8 left and
+  !> right single and double quotes, their Windows-1252 bytes, a backtick.
+  pure function typographic_quote(value) result(q)
+    character(len=*), intent(in) :: value
+    character(len=:), allocatable :: q
+    q = ''
+    if (len(value) >= 3) then
+      if (value(1:2) == achar(226) // achar(128) .and. iachar(value(3:3)) >= 152 .and. &
+          iachar(value(3:3)) <= 159) then
+        q = 'UTF-8 ' // value(1:3)
+        return
+      end if
+    end if
+    if (len(value) >= 1) then
+      if (iachar(value(1:1)) >= 145 .and. iachar(value(1:1)) <= 148) then
+        q = 'Windows-1252 byte ' // str(iachar(value(1:1)))
+      else if (value(1:1) == '`') then
+        q = '`'
+      end if
+    end if
+  end function typographic_quote
+
+  !> A text without the typographic quotes around it, for the fix.
+  pure function unquoted(value) result(t)
+    character(len=*), intent(in) :: value
+    character(len=:), allocatable :: t
+    integer :: n
+    t = value
+    if (len(t) >= 3) then
+      if (t(1:2) == achar(226) // achar(128)) t = t(4:)
+    end if
+    if (len(t) >= 1) then
+      if ((iachar(t(1:1)) >= 145 .and. iachar(t(1:1)) <= 148) .or. t(1:1) == '`') t = t(2:)
+    end if
+    n = len(t)
+    if (n >= 3) then
+      if (t(n-2:n-1) == achar(226) // achar(128)) t = t(1:n-3)
+    end if
+    n = len(t)
+    if (n >= 1) then
+      if ((iachar(t(n:n)) >= 145 .and. iachar(t(n:n)) <= 148) .or. t(n:n) == '`' .or. t(n:n) == '''') &
+        t = t(1:n-1)
+    end if
+  end function unquoted
 
   !> The values of key k did not read as the key's type.
   subroutine unreadable(deck, blk, k, label, iomsg, err)

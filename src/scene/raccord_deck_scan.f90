@@ -115,7 +115,7 @@ contains
     character(len=*), intent(in) :: known_groups(:)
     type(deck_block_t), allocatable, intent(out) :: blocks(:)
     type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: line, seg_text, seg_mask, name
+    character(len=:), allocatable :: line, seg_text, seg_mask, name, hint
     character(len=256) :: msg
     character(len=1) :: c, quote
     integer :: u, ios, lnum, i, j, nblock
@@ -162,6 +162,13 @@ contains
       end if
       if (at_end) exit lines
       lnum = lnum + 1
+      ! UTF-16 (Windows Notepad's "Unicode") puts a NUL byte beside every
+      ! ASCII character: the deck read as text outside any group.
+      if (index(line, achar(0)) > 0) then
+        call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': the line holds NUL bytes: the deck is ' // &
+          'saved as UTF-16 ("Unicode") or is not text; save it as plain text (UTF-8 or ASCII)')
+        exit lines
+      end if
       ! A UTF-8 byte-order mark (editors on Windows save one) is no text.
       if (lnum == 1 .and. len(line) >= 3) then
         if (line(1:3) == achar(239) // achar(187) // achar(191)) line = line(4:)
@@ -306,9 +313,15 @@ contains
       end do chars
 
       if (in_quote) then
+        ! a typographic closing quote (a word processor's) does not close it
+        hint = ''
+        if (index(line, achar(226) // achar(128) // achar(153)) > 0 .or. &
+            index(line, achar(226) // achar(128) // achar(157)) > 0 .or. &
+            scan(line, achar(146) // achar(148)) > 0) &
+          hint = '; the line holds a typographic closing quote, which is not a quote for Fortran'
         call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': &' // blocks(nblock)%group // &
           ': a string opened with ' // quote // ' is not closed on this line; close it with ' // quote // &
-          ' (write a quote inside a string twice)')
+          ' (write a quote inside a string twice)' // hint)
         exit lines
       end if
       ! Lines are joined by a blank, so a value never runs into the next line.

@@ -37,6 +37,15 @@
 #            closing no group (it was "text outside a group: '/'" or
 #            "unknown group '&end'")                               2, valid
 
+#   deckenc  a text in typographic quotes (UTF-8 single and double, their
+#            Windows-1252 bytes, a backtick) or opened with ' and closed
+#            with a typographic quote, a deck saved as UTF-16: refused,
+#            naming the quotes or the encoding (they were "text must be in
+#            quotes; write name = '<the typographic quotes kept>'", "not
+#            closed on this line" and "text outside a group: '<the line
+#            with NUL bytes>'"); a typographic apostrophe inside a quoted
+#            title runs                                            2, valid
+
 # ---------------------------------------------------------------- resnames
 latin1=$(printf '\351')
 for v in "slash:a/b:--check" "dot:.:" "slash-run:p/q:"; do
@@ -224,3 +233,32 @@ d=$(seed_pair plate.nml)
 edit_lines "$c/$d" '$0 == "/" && !done { $0 = "//"; done = 1 } { print }'
 set_args -o out "$d"
 set_names "no group is open"
+
+# ---------------------------------------------------------------- deckenc
+# enc_case NAME NOTE OPEN CLOSE: plate.nml with name = <OPEN>plate<CLOSE>
+enc_case() {
+  new_case "deckenc.plate.nml.$1" deckenc bad 2 "plate.nml: &body name = $2"
+  d=$(seed_pair plate.nml)
+  set_key "$c/$d" name "$3plate$4"
+  set_args -o out "$d"
+  set_names "typographic"
+}
+enc_case utf8-single "UTF-8 left and right single quotes" "$(printf '\342\200\230')" "$(printf '\342\200\231')"
+enc_case utf8-double "UTF-8 left and right double quotes" "$(printf '\342\200\234')" "$(printf '\342\200\235')"
+enc_case cp1252-double "Windows-1252 double quotes (bytes 147, 148)" "$(printf '\223')" "$(printf '\224')"
+enc_case backtick "backticks" '`' '`'
+enc_case plain-then-utf8 "opened with ' and closed with a UTF-8 right single quote" "'" "$(printf '\342\200\231')"
+new_case deckenc.plate.nml.utf16le deckenc bad 2 "plate.nml saved as UTF-16LE with its byte-order mark"
+d=$(seed_pair plate.nml)
+{ printf '\377\376'; awk '{ n = length($0); for (i = 1; i <= n; i++) printf "%s%c", substr($0, i, 1), 0; printf "\n%c", 0 }' "$seeds/plate.nml"; } > "$c/$d"
+set_args -o out "$d"
+set_names "UTF-16"
+new_case deckenc.plate.nml.utf16be deckenc bad 2 "plate.nml saved as UTF-16BE without a byte-order mark"
+d=$(seed_pair plate.nml)
+awk '{ n = length($0); for (i = 1; i <= n; i++) printf "%c%s", 0, substr($0, i, 1); printf "%c\n", 0 }' "$seeds/plate.nml" > "$c/$d"
+set_args -o out "$d"
+set_names "UTF-16"
+new_case deckenc.plate.nml.apostrophe-in-title deckenc valid 0 "plate.nml: title = 'Bob<U+2019>s plate' (a typographic apostrophe inside plain quotes)"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" title "'Bob$(printf '\342\200\231')s plate'"
+set_args -o out "$d"
