@@ -63,6 +63,15 @@ contains
             clipped(key%name, MAX_ECHO) // ''' (known keys: ' // join_names(known) // '); check the spelling')
           return
         end if
+        ! A repeat count without a value (1*, 2*) is a null value: the key
+        ! kept its default without a word (or a required key was "missing").
+        if (only_nulls(blk%value_text(k))) then
+          call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+            ''' = ' // clipped(blk%value_text(k), MAX_ECHO) // ' has no value (a repeat count without a value ' // &
+            'is a null value, which leaves the default); write ' // key%name // &
+            ' = <value>, or remove the key to use its default')
+          return
+        end if
         if (any(TEXT_KEYS == key%name)) then
           value = blk%value_text(k)
           if (len(typographic_quote(value)) > 0) then
@@ -180,6 +189,40 @@ contains
       if (item(n:n) == ',') item = trim(item(1:n-1))
     end if
   end function item_text
+
+  !> A value list made only of null values written as repeat counts
+  !> ("1*", "2*, 1*"); an empty list is reported by the scanner.
+  pure logical function only_nulls(text)
+    character(len=*), intent(in) :: text
+    integer :: k, digits
+    logical :: star
+    only_nulls = .false.
+    digits = 0
+    star = .false.
+    do k = 1, len(text)
+      select case (text(k:k))
+      case ('0':'9')
+        if (star) return
+        digits = digits + 1
+      case ('*')
+        if (digits == 0 .or. star) return
+        star = .true.
+      case (' ', ',')
+        if (digits > 0 .and. .not. star) return
+        if (star) only_nulls = .true.
+        digits = 0
+        star = .false.
+      case default
+        only_nulls = .false.
+        return
+      end select
+    end do
+    if (digits > 0 .and. .not. star) then
+      only_nulls = .false.
+    else if (star) then
+      only_nulls = .true.
+    end if
+  end function only_nulls
 
   !> The typographic quote a text starts with ('' if none): UTF-8 left and
   !> right single and double quotes, their Windows-1252 bytes, a backtick.

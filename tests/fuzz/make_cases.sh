@@ -53,7 +53,7 @@
 #   abaqus, gmshphys, restart, fmutate), described there, and of
 #   make_cases_names.sh (names, bounds), make_cases_files.sh (special,
 #   longtext, manysets, inpgeom, ...) and make_cases_deck.sh
-#   (resnames, subscript, logical, stepfix, deckend, deckenc).
+#   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval).
 set -u
 LC_ALL=C
 export LC_ALL

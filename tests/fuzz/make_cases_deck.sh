@@ -46,6 +46,12 @@
 #            with NUL bytes>'"); a typographic apostrophe inside a quoted
 #            title runs                                            2, valid
 
+#   nullval  a key whose value is only null repeat counts (frames = 1*,
+#            velocity = 2*, young = 1*): refused as having no value, like
+#            'young = ,' (the default was kept without a word, or a
+#            required key was "missing" at the group's line); a null entry
+#            beside a value (velocity = 1*, 5.0) runs              2, valid
+
 # ---------------------------------------------------------------- resnames
 latin1=$(printf '\351')
 for v in "slash:a/b:--check" "dot:.:" "slash-run:p/q:"; do
@@ -261,4 +267,18 @@ set_names "UTF-16"
 new_case deckenc.plate.nml.apostrophe-in-title deckenc valid 0 "plate.nml: title = 'Bob<U+2019>s plate' (a typographic apostrophe inside plain quotes)"
 d=$(seed_pair plate.nml)
 set_key "$c/$d" title "'Bob$(printf '\342\200\231')s plate'"
+set_args -o out "$d"
+
+# ---------------------------------------------------------------- nullval
+for v in "frames:1*" "young:1*" "velocity:2*" "body_force:1*, 1*" "t_end:1*" "title:1*" "safety:3*"; do
+  k=${v%%:*}; val=${v#*:}
+  new_case "nullval.plate.nml.$k" nullval bad 2 "plate.nml: $k = $val (null values only)"
+  d=$(seed_pair plate.nml)
+  set_key "$c/$d" "$k" "$val"
+  set_args -o out "$d"
+  set_names "has no value"
+done
+new_case nullval.plate.nml.velocity-null-and-value nullval valid 0 "plate.nml: velocity = 1*, 5.0 (entry 1 keeps its default)"
+d=$(seed_pair plate.nml)
+set_key "$c/$d" velocity "1*, 5.0"
 set_args -o out "$d"
