@@ -5,7 +5,7 @@ module raccord_strings
   implicit none
   private
 
-  public :: str, lower, starts_with, ends_with, clipped
+  public :: str, lower, starts_with, ends_with, clipped, text_flaw
 
   !> Convert a number to its shortest readable text.
   interface str
@@ -145,4 +145,68 @@ contains
       r = trim(s)
     end if
   end function clipped
+  !> What keeps a text from being written as a name in an XML file (the
+  !> .xmf of the results): '' when it is UTF-8 without control characters
+  !> (a tab is allowed), else what is wrong and at which byte. With
+  !> utf8 = .false. only control characters are looked for (paths, titles).
+  pure function text_flaw(s, utf8) result(r)
+    character(len=*), intent(in) :: s
+    logical, intent(in) :: utf8
+    character(len=:), allocatable :: r
+    integer :: k, b, n, j, c, lo, hi
+    r = ''
+    k = 1
+    do while (k <= len(s))
+      b = iachar(s(k:k))
+      if ((b < 32 .and. b /= 9) .or. b == 127) then
+        r = 'byte ' // str_int(k) // ' is a control character (code ' // str_int(b) // ')'
+        return
+      end if
+      if (b < 128 .or. .not. utf8) then
+        k = k + 1
+        cycle
+      end if
+      ! A lead byte and the range of its first continuation byte (no
+      ! overlong forms, no surrogates, nothing above U+10FFFF).
+      lo = 128
+      hi = 191
+      select case (b)
+      case (194:223)
+        n = 1
+      case (224)
+        n = 2; lo = 160
+      case (225:236, 238:239)
+        n = 2
+      case (237)
+        n = 2; hi = 159
+      case (240)
+        n = 3; lo = 144
+      case (241:243)
+        n = 3
+      case (244)
+        n = 3; hi = 143
+      case default
+        n = 0
+      end select
+      if (n > 0 .and. k + n <= len(s)) then
+        do j = 1, n
+          c = iachar(s(k+j:k+j))
+          if (c < lo .or. c > hi) then
+            n = 0
+            exit
+          end if
+          lo = 128
+          hi = 191
+        end do
+      else
+        n = 0
+      end if
+      if (n == 0) then
+        r = 'byte ' // str_int(k) // ' (code ' // str_int(b) // ') is not UTF-8 (a Latin-1 or Windows-1252 ' // &
+          'character?)'
+        return
+      end if
+      k = k + n + 1
+    end do
+  end function text_flaw
 end module raccord_strings

@@ -36,6 +36,15 @@ module raccord_abaqus_reader
   !> The keywords whose data lines raccord reads (or follows), in full.
   character(len=*), parameter :: MESH_KEYWORDS(6) = [character(len=7) :: 'node', 'element', 'nset', &
     'elset', 'surface', 'include']
+  !> Keywords that make or move nodes or elements, which raccord does not
+  !> read: skipped as "no mesh data", the mesh read lacked their nodes and
+  !> elements, or held the nodes where they are not. Refused, with what each does.
+  character(len=*), parameter :: GEOMETRY_KEYWORDS(7) = [character(len=6) :: 'system', 'ngen', 'nfill', &
+    'ncopy', 'nmap', 'elgen', 'elcopy']
+  character(len=*), parameter :: GEOMETRY_WHAT(7) = [character(len=64) :: &
+    'places the nodes that follow in a local coordinate system', 'generates nodes along a line', &
+    'fills in nodes between two node sets', 'copies nodes', 'maps nodes to other coordinates', &
+    'generates elements from a master element', 'copies elements']
   !> *INCLUDE nesting beyond this is taken for a file including itself.
   integer, parameter :: MAX_INCLUDE_DEPTH = 10
   character(len=*), parameter :: caller = 'read_abaqus'
@@ -189,6 +198,15 @@ contains
         '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
       return
     end if
+    ! (a loop: gfortran's findloc missed a shorter character scalar)
+    do k = 1, size(GEOMETRY_KEYWORDS)
+      if (kw /= trim(GEOMETRY_KEYWORDS(k))) cycle
+      call raise_error(err, EXIT_INPUT, at // ': *' // clip(trim(adjustl(sl%text(2:l(1))))) // ' ' // &
+        trim(GEOMETRY_WHAT(k)) // ', which raccord does not read (the mesh would lack those nodes or elements, ' // &
+        'or hold them elsewhere): write the input with every node and element listed in global x, y ' // &
+        '(Abaqus/CAE and CalculiX cgx, send all abq, write it so)')
+      return
+    end do
     if (kw == 'include') then
       ! textual inclusion: the current block goes on into the included file,
       ! which may hold just its data lines
@@ -230,6 +248,15 @@ contains
     select case (kw)
     case ('node')
       st%block = BLK_NODE
+      ! SYSTEM=C or S: the data lines hold cylindrical or spherical
+      ! coordinates (Abaqus), which were read as x, y without a word
+      call get_param(sl%text, f, l, nf, 'system', typ, found)
+      if (found .and. lower(typ) /= 'r') then
+        call raise_error(err, EXIT_INPUT, at // ': *NODE, SYSTEM=' // clip(typ) // ' gives the nodes in ' // &
+          'cylindrical (C) or spherical (S) coordinates, which raccord does not convert: write the nodes in ' // &
+          'Cartesian x, y (SYSTEM=R, the default)')
+        return
+      end if
       call get_param(sl%text, f, l, nf, 'nset', name, found, quoted)
       if (found) call add_named_group(d%nsets, d%nnset, d%nset_index, name, quoted, at // ': NSET=', st%set, err)
       if (err%failed()) return
@@ -266,6 +293,15 @@ contains
         return
       end if
       if (kw == 'nset') then
+        ! *NSET, ELSET=...: the nodes of an element set, without data
+        ! lines; read as an empty set, it was "set is empty" at the deck
+        call get_param(sl%text, f, l, nf, 'elset', typ, found)
+        if (found) then
+          call raise_error(err, EXIT_INPUT, at // ': ' // st%keyword // ', ELSET=' // clip(typ) // ' (the ' // &
+            'nodes of an element set) is not read: list the node ids on data lines after *NSET, NSET=' // &
+            clip(name) // ', or use a *SURFACE on the elements'' faces')
+          return
+        end if
         st%block = BLK_NSET
         call add_named_group(d%nsets, d%nnset, d%nset_index, name, quoted, at // ': ' // st%keyword // ', NSET=', &
           st%set, err)

@@ -46,6 +46,8 @@ contains
     call copy_amplitudes(scene, model)
     call build_bodies(scene, mesh, model, elem_body, err)
     if (err%failed()) return
+    call check_block_names(scene, model, err)
+    if (err%failed()) return
     call claim_nodes(model)
     call build_boundaries(scene, mesh, model, elem_body, err)
     if (err%failed()) return
@@ -141,6 +143,32 @@ contains
       model%amplitudes(k)%a = scene%amplitudes(k)%a(1:n)
     end do
   end subroutine copy_amplitudes
+
+  !> The results file names a body's elements after the body, and a body
+  !> with Q4 and Q8 elements NAME_1 (Q4) and NAME_2 (Q8): another body may
+  !> not take one of those names (found here, before the run starts, rather
+  !> than when the results file is opened).
+  subroutine check_block_names(scene, model, err)
+    type(scene_t), intent(in) :: scene
+    type(model_t), intent(in) :: model
+    type(error_t), intent(inout) :: err
+    integer :: ib, jb, k
+    character(len=:), allocatable :: block
+    do ib = 1, size(model%bodies)
+      if (size(model%bodies(ib)%blocks) < 2) cycle
+      do k = 1, size(model%bodies(ib)%blocks)
+        block = model%bodies(ib)%name // '_' // str(k)
+        do jb = 1, size(model%bodies)
+          if (model%bodies(jb)%name /= block) cycle
+          call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &body ''' // model%bodies(jb)%name // &
+            ''': body ''' // model%bodies(ib)%name // ''' has Q4 and Q8 elements, which the results file keeps ' // &
+            'as the blocks ''' // model%bodies(ib)%name // '_1'' (Q4) and ''' // model%bodies(ib)%name // &
+            '_2'' (Q8), and this body''s name is one of them; rename one of the two bodies')
+          return
+        end do
+      end do
+    end do
+  end subroutine check_block_names
 
   !> Bodies: elastic blocks per element type, lumped masses, stable-step
   !> bound, initial velocities and body forces.

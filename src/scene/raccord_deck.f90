@@ -16,7 +16,7 @@ module raccord_deck
     ieee_set_flag, ieee_support_halting
   use raccord_kinds, only: wp, name_len, path_len
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
-  use raccord_strings, only: str, lower
+  use raccord_strings, only: str, lower, text_flaw
   use raccord_log, only: log_warn
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
   use raccord_deck_scan, only: deck_block_t, scan_deck, join_names
@@ -80,6 +80,14 @@ contains
     scene%path = path
     scene%dir = absolute_path(path_dir(path))
     stem = path_stem(path)
+    ! The results are named after the deck, and the .xmf (XML) names its
+    ! .h5 file: a name that is not UTF-8 would make the .xmf unreadable.
+    if (len(text_flaw(stem, .true.)) > 0) then
+      call raise_error(err, EXIT_INPUT, path // ': the deck''s file name names the results (<name>.h5, ' // &
+        '<name>.xmf), and in it ' // text_flaw(stem, .true.) // ', which the .xmf (XML) cannot hold; ' // &
+        'rename the deck in plain ASCII or UTF-8')
+      return
+    end if
 
     call scan_deck(path, GROUPS, blocks, err)
     if (err%failed()) return
@@ -389,6 +397,11 @@ contains
 
     if (len_trim(name) == 0) then
       call missing_key(deck, blk, label, 'name', 'name = ''part'' (used in messages and results)', err)
+    else if (.not. link_name(name)) then
+      call bad_value(deck, blk, label, 'name', 'the results file keeps the body''s elements under ' // &
+        '/mesh/blocks/<name>, and an HDF5 name can neither hold ''/'' nor be ''.''', &
+        'rename the body (the elements still come from elset, or the mesh set of the old name: ' // &
+        'elset = ''' // trim(name) // ''')', err)
     else if (young == UNSET) then
       call missing_key(deck, blk, label, 'young', 'young = <Young''s modulus>, e.g. 70000.0 (MPa)', err)
     else if (poisson == UNSET) then
@@ -536,6 +549,12 @@ contains
     end do
 
     if (spec%kind == BC_FIXED .or. spec%kind == BC_DISPLACEMENT) then
+      if (.not. link_name(set)) then
+        call bad_value(deck, blk, label, 'set', 'the results file keeps the nodes of a support under ' // &
+          '/mesh/node_sets/<set>, and an HDF5 name can neither hold ''/'' nor be ''.''', &
+          'rename the set in the mesh (and here)', err)
+        return
+      end if
       if (len_trim(components) == 0) then
         call missing_key(deck, blk, label, 'components', 'components = ''xy'', ''x'' or ''y''', err)
         return
@@ -656,6 +675,12 @@ contains
     spec%t = time(1:nt)
     spec%a = value(1:nt)
   end subroutine read_amplitude
+
+  !> A name that can be one link of an HDF5 path in the results file.
+  pure logical function link_name(name)
+    character(len=*), intent(in) :: name
+    link_name = index(name, '/') == 0 .and. trim(name) /= '.'
+  end function link_name
 
   !> Number of entries given in a table key; the entries must be contiguous
   !> from the first (a gap would leave a sentinel inside the table).

@@ -5,7 +5,7 @@ module raccord_deck_checks
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
-  use raccord_strings, only: str, lower, clipped
+  use raccord_strings, only: str, lower, clipped, text_flaw
   use raccord_deck_scan, only: deck_block_t, join_names
   use raccord_scene, only: MAX_TABLE
   implicit none
@@ -15,6 +15,18 @@ module raccord_deck_checks
   character(len=*), parameter :: TEXT_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file', &
     'format', 'name', 'elset', 'hypothesis', 'set', 'type', 'components', 'amplitude', 'slave', 'master', &
     'method', 'multiplier', 'kinematics', 'material', 'volumetric', 'conditions', 'edge_multipliers']
+
+  !> Text keys that hold a path or free text, not a name: they may be in
+  !> any encoding (a file name on disk), but hold no control characters.
+  character(len=*), parameter :: PATH_KEYS(*) = [character(len=16) :: 'title', 'output_dir', 'file']
+
+  !> Keys that take a list of reals (velocity(2) = ... sets one entry).
+  character(len=*), parameter :: ARRAY_KEYS(*) = [character(len=16) :: 'velocity', 'body_force', 'value', 'time']
+
+  !> Keys that take a logical, and the forms of a logical value they take.
+  character(len=*), parameter :: LOGICAL_KEYS(*) = [character(len=16) :: 'stress']
+  character(len=*), parameter :: LOGICAL_WORDS(*) = [character(len=7) :: '.true.', '.false.', 't', 'f', &
+    '.t.', '.f.', 'true', 'false']
 
   public :: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite
 
@@ -42,7 +54,7 @@ contains
     type(deck_block_t), intent(in) :: blk
     character(len=*), intent(in) :: known(:)
     type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: value
+    character(len=:), allocatable :: value, flaw
     integer :: k, j
     do k = 1, size(blk%keys)
       associate (key => blk%keys(k))
@@ -51,14 +63,65 @@ contains
             clipped(key%name, MAX_ECHO) // ''' (known keys: ' // join_names(known) // '); check the spelling')
           return
         end if
+        ! A repeat count without a value (1*, 2*) is a null value: the key
+        ! kept its default without a word (or a required key was "missing").
+        if (only_nulls(blk%value_text(k))) then
+          call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+            ''' = ' // clipped(blk%value_text(k), MAX_ECHO) // ' has no value (a repeat count without a value ' // &
+            'is a null value, which leaves the default); write ' // key%name // &
+            ' = <value>, or remove the key to use its default')
+          return
+        end if
         if (any(TEXT_KEYS == key%name)) then
           value = blk%value_text(k)
+          if (len(typographic_quote(value)) > 0) then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''' = ' // clipped(value, MAX_ECHO) // ': the text is in typographic quotes (' // &
+              typographic_quote(value) // ', as a word processor or a web page writes them), which Fortran ' // &
+              'does not take for quotes; write ' // key%name // ' = ''' // clipped(unquoted(value), MAX_ECHO) // &
+              ''' with the plain quote '' (or ")')
+            return
+          end if
           if (value(1:1) /= '''' .and. value(1:1) /= '"') then
             call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
               ''' = ' // clipped(value, MAX_ECHO) // ': text must be in quotes; write ' // key%name // ' = ''' // &
               clipped(value, MAX_ECHO) // '''')
             return
           end if
+          ! Names end up in the results' .xmf (XML): they must be UTF-8
+          ! without control characters; paths and the title only the latter.
+          flaw = text_flaw(value(2:max(1, len(value) - 1)), .not. any(PATH_KEYS == key%name))
+          if (len(flaw) > 0) then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''': in the text, ' // flaw // ', which the results'' .xmf (XML) cannot hold; retype the ' // &
+              'text in plain ASCII, or save the deck as UTF-8')
+            return
+          end if
+        end if
+        ! Fortran reads any word that starts with t or f (after an
+        ! optional '.') as a logical: stress = full was .false., stress =
+        ! tensor .true. Only the forms of true and false are taken.
+        if (any(LOGICAL_KEYS == key%name)) then
+          value = lower(blk%value_text(k))
+          if (.not. any(LOGICAL_WORDS == value)) then
+            call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+              ''' = ' // clipped(blk%value_text(k), MAX_ECHO) // ': not a logical value (Fortran would read ' // &
+              'any word that starts with t as true and with f as false); write ' // key%name // &
+              ' = .true. or ' // key%name // ' = .false.')
+            return
+          end if
+        end if
+        if (key%subscripted .and. .not. any(ARRAY_KEYS == key%name)) then
+          call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
+            ''' (' // clipped(item_text(blk, k), MAX_ECHO) // '): a subscript applies only to the list keys (' // &
+            join_names(ARRAY_KEYS) // '); ' // key%name // ' takes a single ' // &
+            trim(merge('text  ', 'number', any(TEXT_KEYS == key%name))) // ': write ' // key%name // ' = ' // &
+            trim(merge('''...''', '<x>  ', any(TEXT_KEYS == key%name))))
+          return
+        end if
+        if (any(ARRAY_KEYS == key%name)) then
+          call check_entries(deck, blk, k, label, err)
+          if (err%failed()) return
         end if
         if (.not. key%subscripted) then
           do j = 1, k - 1
@@ -71,6 +134,140 @@ contains
       end associate
     end do
   end subroutine check_keys
+
+  !> Key k of a list key sets no entry that an earlier item of the same key
+  !> set (velocity = 1.0, 2.0, velocity(1) = 5.0 kept 5.0 without a word).
+  !> Which entries an item sets is found by reading it into a probe list, so
+  !> that repeat counts (2*1.0), nulls (', 5.0') and sections (time(3:4))
+  !> count as the namelist read counts them.
+  subroutine check_entries(deck, blk, k, label, err)
+    character(len=*), intent(in) :: deck, label
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    type(error_t), intent(inout) :: err
+    logical :: mine(MAX_TABLE), theirs(MAX_TABLE)
+    integer :: j, i
+    mine = entries_set(blk, k)
+    if (.not. any(mine)) return
+    do j = 1, k - 1
+      if (blk%keys(j)%name /= blk%keys(k)%name) cycle
+      theirs = entries_set(blk, j)
+      if (.not. any(mine .and. theirs)) cycle
+      i = findloc(mine .and. theirs, .true., dim=1)
+      call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
+        blk%keys(k)%name // ''': entry ' // str(i) // ' is given twice (line ' // str(blk%keys(j)%line) // ': ' // &
+        clipped(item_text(blk, j), MAX_ECHO) // '; line ' // str(blk%keys(k)%line) // ': ' // &
+        clipped(item_text(blk, k), MAX_ECHO) // '); give each entry once')
+      return
+    end do
+  end subroutine check_entries
+
+  !> The entries of a list that item k sets (none if it does not read).
+  function entries_set(blk, k) result(set)
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    logical :: set(MAX_TABLE)
+    real(wp) :: a(MAX_TABLE)
+    namelist /probe/ a
+    character(len=:), allocatable :: record
+    integer :: ios
+    a = UNSET
+    record = '&probe a' // blk%text(blk%keys(k)%first + len(blk%keys(k)%name):blk%keys(k)%last) // ' /'
+    read(record, nml=probe, iostat=ios)
+    set = a /= UNSET .and. ios == 0
+  end function entries_set
+
+  !> Item k as written, subscript included, without a trailing comma.
+  pure function item_text(blk, k) result(item)
+    type(deck_block_t), intent(in) :: blk
+    integer, intent(in) :: k
+    character(len=:), allocatable :: item
+    integer :: n
+    item = trim(adjustl(blk%text(blk%keys(k)%first:blk%keys(k)%last)))
+    n = len(item)
+    if (n > 0) then
+      if (item(n:n) == ',') item = trim(item(1:n-1))
+    end if
+  end function item_text
+
+  !> A value list made only of null values written as repeat counts
+  !> ("1*", "2*, 1*"); an empty list is reported by the scanner.
+  pure logical function only_nulls(text)
+    character(len=*), intent(in) :: text
+    integer :: k, digits
+    logical :: star
+    only_nulls = .false.
+    digits = 0
+    star = .false.
+    do k = 1, len(text)
+      select case (text(k:k))
+      case ('0':'9')
+        if (star) return
+        digits = digits + 1
+      case ('*')
+        if (digits == 0 .or. star) return
+        star = .true.
+      case (' ', ',')
+        if (digits > 0 .and. .not. star) return
+        if (star) only_nulls = .true.
+        digits = 0
+        star = .false.
+      case default
+        only_nulls = .false.
+        return
+      end select
+    end do
+    if (digits > 0 .and. .not. star) then
+      only_nulls = .false.
+    else if (star) then
+      only_nulls = .true.
+    end if
+  end function only_nulls
+
+  !> The typographic quote a text starts with ('' if none): UTF-8 left and
+  !> right single and double quotes, their Windows-1252 bytes, a backtick.
+  pure function typographic_quote(value) result(q)
+    character(len=*), intent(in) :: value
+    character(len=:), allocatable :: q
+    q = ''
+    if (len(value) >= 3) then
+      if (value(1:2) == achar(226) // achar(128) .and. iachar(value(3:3)) >= 152 .and. &
+          iachar(value(3:3)) <= 159) then
+        q = 'UTF-8 ' // value(1:3)
+        return
+      end if
+    end if
+    if (len(value) >= 1) then
+      if (iachar(value(1:1)) >= 145 .and. iachar(value(1:1)) <= 148) then
+        q = 'Windows-1252 byte ' // str(iachar(value(1:1)))
+      else if (value(1:1) == '`') then
+        q = '`'
+      end if
+    end if
+  end function typographic_quote
+
+  !> A text without the typographic quotes around it, for the fix.
+  pure function unquoted(value) result(t)
+    character(len=*), intent(in) :: value
+    character(len=:), allocatable :: t
+    integer :: n
+    t = value
+    if (len(t) >= 3) then
+      if (t(1:2) == achar(226) // achar(128)) t = t(4:)
+    end if
+    if (len(t) >= 1) then
+      if ((iachar(t(1:1)) >= 145 .and. iachar(t(1:1)) <= 148) .or. t(1:1) == '`') t = t(2:)
+    end if
+    n = len(t)
+    if (n >= 3) then
+      if (t(n-2:n-1) == achar(226) // achar(128)) t = t(1:n-3)
+    end if
+    n = len(t)
+    if (n >= 1) then
+      if ((iachar(t(n:n)) >= 145 .and. iachar(t(n:n)) <= 148) .or. t(n:n) == '`' .or. t(n:n) == '''') &
+        t = t(1:n-1)
+    end if
+  end function unquoted
 
   !> The values of key k did not read as the key's type.
   subroutine unreadable(deck, blk, k, label, iomsg, err)

@@ -8,7 +8,7 @@
 !> syntax well enough to report those with the file, line, group and key;
 !> raccord_deck then reads each key's values with an internal namelist read.
 !>
-!> Syntax handled: '&name' opens a group, '/' closes it; text in '...' or
+!> Syntax handled: '&name' opens a group, '/' (or '&end') closes it; text in '...' or
 !> "..." (a doubled quote stands for itself) is opaque, so '/', '!' and '='
 !> inside quotes are data; '!' outside quotes starts a comment to the end of
 !> the line; a key is a name, optionally subscripted, followed by '='.
@@ -115,7 +115,7 @@ contains
     character(len=*), intent(in) :: known_groups(:)
     type(deck_block_t), allocatable, intent(out) :: blocks(:)
     type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: line, seg_text, seg_mask, name
+    character(len=:), allocatable :: line, seg_text, seg_mask, name, hint
     character(len=256) :: msg
     character(len=1) :: c, quote
     integer :: u, ios, lnum, i, j, nblock
@@ -162,6 +162,13 @@ contains
       end if
       if (at_end) exit lines
       lnum = lnum + 1
+      ! UTF-16 (Windows Notepad's "Unicode") puts a NUL byte beside every
+      ! ASCII character: the deck read as text outside any group.
+      if (index(line, achar(0)) > 0) then
+        call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': the line holds NUL bytes: the deck is ' // &
+          'saved as UTF-16 ("Unicode") or is not text; save it as plain text (UTF-8 or ASCII)')
+        exit lines
+      end if
       ! A UTF-8 byte-order mark (editors on Windows save one) is no text.
       if (lnum == 1 .and. len(line) >= 3) then
         if (line(1:3) == achar(239) // achar(187) // achar(191)) line = line(4:)
@@ -178,6 +185,12 @@ contains
             cycle chars
           end if
           if (c == '!') exit chars
+          if (c == '/' .and. nblock > 0) then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''/'' closes a group, but no ' // &
+              'group is open here (&' // blocks(nblock)%group // ' of line ' // str(blocks(nblock)%line) // &
+              ' was closed before); remove this ''/''')
+            exit lines
+          end if
           if (c /= '&') then
             call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': text outside a group: ''' // &
               shorten(line(i:)) // '''; put every key = value between &group and ''/'' (or comment it out with ''!'')')
@@ -192,6 +205,11 @@ contains
           if (len(name) == 0) then
             call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''&'' without a group name; ' // &
               'write the group name right after it, e.g. &mesh')
+            exit lines
+          end if
+          if (name == 'end') then
+            call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': ''&end'' closes a group, but no ' // &
+              'group is open here (the last one was closed before); remove the ''&end''')
             exit lines
           end if
           if (.not. any(known_groups == name)) then
@@ -252,6 +270,28 @@ contains
           call find_keys(path, blocks(nblock), err)
           if (err%failed()) exit lines
         case ('&')
+          ! '&end' closes a group as '/' does (an older namelist form,
+          ! which gfortran reads too)
+          if (i + 3 <= len(line)) then
+            if (lower(line(i+1:i+3)) == 'end') then
+              j = i + 4
+              if (j > len(line)) then
+                c = ' '
+              else
+                c = line(j:j)
+              end if
+              if (.not. is_name_char(c)) then
+                call append_segment(blocks(nblock), seg_text, seg_mask, lnum)
+                seg_text = ''
+                seg_mask = ''
+                in_group = .false.
+                call find_keys(path, blocks(nblock), err)
+                if (err%failed()) exit lines
+                i = j
+                cycle chars
+              end if
+            end if
+          end if
           if (i < len(line)) then
             if (is_letter(line(i+1:i+1))) then
               call raise_error(err, EXIT_INPUT, path // ':' // str(blocks(nblock)%line) // ': &' // &
@@ -273,9 +313,15 @@ contains
       end do chars
 
       if (in_quote) then
+        ! a typographic closing quote (a word processor's) does not close it
+        hint = ''
+        if (index(line, achar(226) // achar(128) // achar(153)) > 0 .or. &
+            index(line, achar(226) // achar(128) // achar(157)) > 0 .or. &
+            scan(line, achar(146) // achar(148)) > 0) &
+          hint = '; the line holds a typographic closing quote, which is not a quote for Fortran'
         call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': &' // blocks(nblock)%group // &
           ': a string opened with ' // quote // ' is not closed on this line; close it with ' // quote // &
-          ' (write a quote inside a string twice)')
+          ' (write a quote inside a string twice)' // hint)
         exit lines
       end if
       ! Lines are joined by a blank, so a value never runs into the next line.

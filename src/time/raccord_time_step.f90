@@ -179,9 +179,21 @@ contains
     real(wp), intent(in) :: ratio, dt, dt_stable
     type(error_t), intent(inout) :: err
     real(wp), parameter :: max_steps = 2.0_wp**53
+    character(len=:), allocatable :: fix
     if (ieee_is_finite(ratio) .and. ratio <= max_steps) return
+    ! Say which of t_end, dt, safety or the stable step itself is off
+    ! ("shorten t_end" alone misled when dt = 1e-320 or safety = 1e-300).
+    if (scene%time%dt > 0.0_wp) then
+      fix = 'shorten t_end, or give a larger &time dt (at most the stable step ' // str(dt_stable) // &
+        '; dt = 0 takes safety * the stable step)'
+    else if (scene%time%t_end / dt_stable <= max_steps) then
+      fix = 'raise &time safety (now ' // str(scene%time%safety) // '; the default 0.9 is usual), or shorten t_end'
+    else
+      fix = 'shorten t_end (even safety = 1 would not do: if t_end is right, the stable step is too small for ' // &
+        'it: check the units of young, density and &mesh scale, and the smallest element of the mesh)'
+    end if
     call raise_error(err, EXIT_INPUT, 'scene ' // scene%path // ': &time t_end = ' // str(scene%time%t_end) // &
       ' with a step of ' // str(dt) // ' (stable step ' // str(dt_stable) // ') needs ' // str(ratio) // &
-      ' steps, more than the 2^53 = ' // str(max_steps) // ' a run can count: shorten t_end')
+      ' steps, more than the 2^53 = ' // str(max_steps) // ' a run can count: ' // fix)
   end subroutine check_step_count
 end module raccord_time_step

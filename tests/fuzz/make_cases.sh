@@ -51,8 +51,9 @@
 #   damage, meshmix, threads, validdeck, messages) and of
 #   make_cases_features.sh (axi, finite, plastic, pairs, loops, mscale,
 #   abaqus, gmshphys, restart, fmutate), described there, and of
-#   make_cases_names.sh (names, bounds) and make_cases_files.sh (special,
-#   longtext, manysets).
+#   make_cases_names.sh (names, bounds), make_cases_files.sh (special,
+#   longtext, manysets, inpgeom, ...) and make_cases_deck.sh
+#   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -815,5 +816,7 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # Pipes, devices and folders in place of input files, texts of 100000
 # characters, tens of thousands of sets, described there.
 . "$(dirname "$0")/make_cases_files.sh"
+# What the deck's text may hold: names the results cannot hold, described there.
+. "$(dirname "$0")/make_cases_deck.sh"
 
 echo "make_cases: $ncase cases in $cases"

@@ -18,6 +18,12 @@
 #   inpkw    Abaqus keywords cut short (*ELEM, *NSE, *SURF: Abaqus takes
 #            them, raccord skipped them with their data): refused; blanks
 #            inside a keyword (*N SET) are ignored, as in Abaqus     2, valid
+#   inpgeom  Abaqus keywords that make or move nodes or elements (*SYSTEM,
+#            *NGEN, *NFILL, *NCOPY, *NMAP, *ELGEN, *ELCOPY), *NODE with
+#            SYSTEM=C or S, *NSET with ELSET= (no data lines): refused
+#            (skipped as "no mesh data", the mesh lacked those nodes or
+#            elements or held the nodes elsewhere, exit 0; the *NSET was
+#            "set is empty" at the deck); SYSTEM=R reads as x, y   2, valid
 #   binary   a binary file (an HDF5 result) given to *INCLUDE: refused at
 #            its first NUL byte (its lines were skipped as data of the
 #            last keyword, exit 0)                                        2
@@ -184,6 +190,27 @@ done
 new_case inpkw.plate.inp.blank-inside inpkw valid 0 "plate.inp: *NSET written *N SET (blanks ignored)"
 d=$(seed_pair plate.inp)
 edit_lines "$c/plate.inp" '/^\*NSET, NSET=left/ { sub(/^\*NSET/, "*N SET") } { print }'
+set_args -o out "$d"
+
+# ---------------------------------------------------------------- inpgeom
+# inpgeom_case NAME NOTE NAMES AWK: plate.inp edited by AWK (edit_lines)
+inpgeom_case() {
+  new_case "inpgeom.plate.inp.$1" inpgeom bad 2 "plate.inp: $2"
+  d=$(seed_pair plate.inp)
+  edit_lines "$c/plate.inp" "$4"
+  set_args -o out "$d"
+  set_names "$3"
+}
+inpgeom_case system-c "*NODE, NSET=ALL, SYSTEM=C" "SYSTEM=C" '/^\*NODE, NSET=ALL/ { $0 = $0 ", SYSTEM=C" } { print }'
+inpgeom_case system-s "*NODE, SYSTEM=s (lower case)" "SYSTEM=s" '/^\*NODE, NSET=ALL/ { $0 = "*NODE, SYSTEM=s" } { print }'
+inpgeom_case system-keyword "*SYSTEM 10., 0., 0. before *NODE" "*SYSTEM places the nodes" '/^\*NODE, NSET=ALL/ { print "*SYSTEM"; print "10., 0., 0." } { print }'
+for k in NGEN NFILL NCOPY NMAP ELGEN ELCOPY; do
+  inpgeom_case "$(echo $k | tr A-Z a-z)" "*$k before *NSET, NSET=left (its data skipped)" "*$k" "/^\\*NSET, NSET=left/ { print \"*$k, NSET=gen\"; print \"1, 4, 1\" } { print }"
+done
+inpgeom_case nset-elset "*NSET, NSET=left, ELSET=plate (the nodes of an element set)" "is not read" '/^\*NSET, NSET=left/ { $0 = "*NSET, NSET=left, ELSET=plate" } $0 == "1, 5" { next } { print }'
+new_case inpgeom.plate.inp.system-r inpgeom valid 0 "plate.inp: *NODE, NSET=ALL, SYSTEM=R (Cartesian)"
+d=$(seed_pair plate.inp)
+edit_lines "$c/plate.inp" '/^\*NODE, NSET=ALL/ { $0 = $0 ", SYSTEM=R" } { print }'
 set_args -o out "$d"
 
 # ---------------------------------------------------------------- plane
