@@ -87,7 +87,7 @@ contains
       end do
       do k = 1, size(model%loads)
         a = amplitude_at(model, model%loads(k)%amplitude, state%time)
-        row(col+1:col+2) = a*sum(model%loads(k)%force, dim=2)
+        row(col+1:col+2) = a*sum(state%load_force(k)%f, dim=2)
         col = col + 2
       end do
       do k = 1, size(pairs)

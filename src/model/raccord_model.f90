@@ -9,10 +9,11 @@ module raccord_model
   use raccord_elastic_block, only: elastic_block_t
   use raccord_amplitude, only: interpolate_table
   use raccord_threads, only: requested_thread_count
+  use raccord_edge_load, only: add_edge_traction, add_edge_traction_axi
   implicit none
   private
 
-  public :: amplitude_at, requested_threads, set_model_threads
+  public :: amplitude_at, requested_threads, set_model_threads, follower_load_force
 
   !> One deformable body: the elements of one element set, one material;
   !> one elastic block per element type present (Q4 and/or Q8).
@@ -54,7 +55,18 @@ module raccord_model
     character(len=:), allocatable :: set
     integer :: amplitude = 0
     integer, allocatable :: nodes(:)
-    real(wp), allocatable :: force(:,:)                !< (2, size(nodes)) at amplitude 1
+    real(wp), allocatable :: force(:,:)                !< (2, size(nodes)) at amplitude 1, on the undeformed surface
+    !> A pressure on edges of finite-strain bodies follows the surface: its
+    !> nodal forces are those of the deformed edges, recomputed every step
+    !> (follower_load_force). The edges, as positions in nodes(:) (start,
+    !> end, mid; mid 0 on a 2-node edge), which of them follow, and each
+    !> edge's thickness (plane bodies).
+    logical :: follower = .false.
+    logical :: axisymmetric = .false.
+    real(wp) :: pressure = 0.0_wp
+    integer, allocatable :: edges(:,:)                 !< (3, nedge)
+    logical, allocatable :: edge_follows(:)            !< (nedge)
+    real(wp), allocatable :: edge_thickness(:)         !< (nedge)
   end type surface_load_t
 
   !> A time table (copied from the scene).
@@ -108,6 +120,38 @@ module raccord_model
   end type model_t
 
 contains
+
+  !> Nodal forces f(2, size(ld%nodes)) at amplitude 1 of a surface load
+  !> whose pressure follows the surface: the edges of finite-strain bodies
+  !> at their deformed place x + u (normal and length, and the radius of an
+  !> axisymmetric ring), the others on the undeformed mesh, summed in the
+  !> order build_load sums them (so that f equals ld%force at u = 0).
+  pure subroutine follower_load_force(ld, x, u, f)
+    type(surface_load_t), intent(in) :: ld
+    real(wp), intent(in) :: x(:,:), u(:,:)
+    real(wp), intent(out) :: f(:,:)
+    real(wp) :: xe(2, 3), fe(2, 3)
+    integer :: k, j, nen, n
+    f = 0.0_wp
+    do k = 1, size(ld%edges, 2)
+      nen = 2
+      if (ld%edges(3, k) > 0) nen = 3
+      xe = 0.0_wp
+      do j = 1, nen
+        n = ld%nodes(ld%edges(j, k))
+        xe(:, j) = x(:, n)
+        if (ld%edge_follows(k)) xe(:, j) = xe(:, j) + u(:, n)
+      end do
+      if (ld%axisymmetric) then
+        call add_edge_traction_axi(nen, xe, [0.0_wp, 0.0_wp], ld%pressure, fe)
+      else
+        call add_edge_traction(nen, xe, [0.0_wp, 0.0_wp], ld%pressure, ld%edge_thickness(k), fe)
+      end if
+      do j = 1, nen
+        f(:, ld%edges(j, k)) = f(:, ld%edges(j, k)) + fe(:, j)
+      end do
+    end do
+  end subroutine follower_load_force
 
   !> Value at time t of the model's amplitude idx (0: the constant 1).
   pure real(wp) function amplitude_at(model, idx, t) result(a)

@@ -434,6 +434,7 @@ contains
     real(wp) :: xe(2, 3), fe(2, 3), traction(2), pressure
     real(wp), allocatable :: f(:,:)
     logical, allocatable :: touched(:)
+    integer, allocatable :: pos(:)
     character(len=:), allocatable :: where
 
     where = 'scene ' // scene%path // ': &boundary #' // str(ibc) // ' (set ''' // trim(bc%set) // ''')'
@@ -456,7 +457,11 @@ contains
     allocate(f(2, mesh%nnode), source=0.0_wp)
     allocate(touched(mesh%nnode), source=.false.)
     associate (surf => mesh%surfaces(is))
-      nen = surf%nen_edge
+      load%pressure = pressure
+      load%axisymmetric = model%axisymmetric
+      allocate(load%edges(3, surf%nedge), source=0)
+      allocate(load%edge_follows(surf%nedge), source=.false.)
+      allocate(load%edge_thickness(surf%nedge), source=1.0_wp)
       do k = 1, surf%nedge
         e = surf%elem(k)
         if (e <= 0) then
@@ -470,6 +475,12 @@ contains
           call raise_error(err, EXIT_INPUT, where // ': edge ' // str(k) // ' belongs to element ' // &
             str(mesh%elem_id(e)) // ', which is in no &body.')
           return
+        end if
+        ! a 2-node edge of a surface that also has 3-node edges (Q4 and
+        ! Q8 bodies) has mid = 0
+        nen = 2
+        if (surf%nen_edge == 3) then
+          if (surf%edge(3, k) > 0) nen = 3
         end if
         xe = 0.0_wp
         do j = 1, nen
@@ -485,12 +496,27 @@ contains
           f(:, surf%edge(j, k)) = f(:, surf%edge(j, k)) + fe(:, j)
           touched(surf%edge(j, k)) = .true.
         end do
+        ! a pressure on a finite-strain body acts on the deformed surface
+        ! (as Abaqus and CalculiX apply it with NLGEOM); a traction stays
+        ! a force per undeformed area in a fixed direction
+        load%edges(1:nen, k) = surf%edge(1:nen, k)
+        load%edge_follows(k) = bc%kind == BC_PRESSURE .and. scene%bodies(ib)%kinematics == KIN_FINITE
+        load%edge_thickness(k) = scene%bodies(ib)%thickness
       end do
     end associate
     load%set = trim(bc%set)
     call resolve_amplitude(model, bc%amplitude, load%amplitude)
     load%nodes = pack([(j, j = 1, mesh%nnode)], touched)
     load%force = f(:, load%nodes)
+    load%follower = any(load%edge_follows)
+    ! the edges' nodes as positions in load%nodes
+    allocate(pos(mesh%nnode), source=0)
+    pos(load%nodes) = [(j, j = 1, size(load%nodes))]
+    do k = 1, size(load%edges, 2)
+      do j = 1, 3
+        if (load%edges(j, k) > 0) load%edges(j, k) = pos(load%edges(j, k))
+      end do
+    end do
   end subroutine build_load
 
   !> An axisymmetric mesh lies in x = r >= 0: a node of a body at r < 0 is

@@ -23,7 +23,7 @@
 !> stay serial.
 module raccord_central_difference
   use raccord_kinds, only: wp, i8
-  use raccord_model, only: model_t, amplitude_at
+  use raccord_model, only: model_t, amplitude_at, follower_load_force
   use raccord_state, only: state_t
   use raccord_elastic_block, only: add_internal_force, watch_energy, watch_dissipation, reports_energy
   use raccord_material, only: KIN_FINITE, MAT_J2
@@ -96,7 +96,8 @@ contains
       do l = 1, size(model%loads)
         associate (ld => model%loads(l))
           state%load_amp(l) = amplitude_at(model, ld%amplitude, state%time)
-          state%f_ext(:, ld%nodes) = state%f_ext(:, ld%nodes) + state%load_amp(l)*ld%force
+          if (ld%follower) call follower_load_force(ld, model%x, state%u, state%load_force(l)%f)
+          state%f_ext(:, ld%nodes) = state%f_ext(:, ld%nodes) + state%load_amp(l)*state%load_force(l)%f
         end associate
       end do
     end if
@@ -449,8 +450,8 @@ contains
       wl = 0.0_wp
       do k = 1, size(model%loads(l)%nodes)
         n = model%loads(l)%nodes(k)
-        wl = wl + model%loads(l)%force(1, k)*increment(state, model, 1, n) + &
-          model%loads(l)%force(2, k)*increment(state, model, 2, n)
+        wl = wl + state%load_force(l)%f(1, k)*increment(state, model, 1, n) + &
+          state%load_force(l)%f(2, k)*increment(state, model, 2, n)
       end do
       w = w + state%load_amp(l)*wl
     end do

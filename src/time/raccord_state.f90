@@ -33,6 +33,11 @@ module raccord_state
   end type energy_t
 
   !> State at step n: u(n), v(n+1/2) after the predictor, forces at t(n).
+  !> The nodal forces of one surface load (2, size of its nodes).
+  type, public :: load_force_t
+    real(wp), allocatable :: f(:,:)
+  end type load_force_t
+
   type, public :: state_t
     integer(i8) :: step = 0
     integer(i8) :: nsteps = 0
@@ -52,6 +57,10 @@ module raccord_state
     real(wp), allocatable :: reaction(:)    !< reaction at each constrained dof at t(n)
     real(wp), allocatable :: cdof_vold(:)   !< v(n-1/2) of each constrained dof (predictor scratch)
     real(wp), allocatable :: load_amp(:)    !< amplitude of each surface load at t(n)
+    !> nodal forces of each surface load at amplitude 1 at t(n): the
+    !> model's for a fixed load, recomputed on the deformed surface every
+    !> step for a pressure on finite-strain bodies (follower_load_force)
+    type(load_force_t), allocatable :: load_force(:)
     real(wp), allocatable :: support_amp(:) !< amplitude of each driven support at t(n+1) (0 if fixed)
     type(energy_t) :: energy
     !> (block, body): what each finite-strain block reported at the last
@@ -83,6 +92,10 @@ contains
     state%v_mid = model%v0
     allocate(state%reaction(model%ncdof), state%cdof_vold(model%ncdof), source=0.0_wp)
     allocate(state%load_amp(size(model%loads)), source=0.0_wp)
+    allocate(state%load_force(size(model%loads)))
+    do k = 1, size(model%loads)
+      state%load_force(k)%f = model%loads(k)%force
+    end do
     allocate(state%support_amp(size(model%supports)), source=0.0_wp)
     state%dt_prev = dt
     state%dt_plan = dt

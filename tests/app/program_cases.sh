@@ -516,6 +516,62 @@ verify)
   expect_code 1
   ;;
 
+mixed_order_load)
+  # A pressure on one surface over a Q4 body and a Q8 body (the surface
+  # has 3-node edges, and the Q4 edge's mid node is 0): 10 MPa on two
+  # unit edges, total force (0, -20) in every history row. The Q4 edge
+  # used to be integrated as a 3-node edge through node 0 (out of bounds;
+  # the Check build stops on it).
+  cat > "$work/mix.inp" <<'EOF_INP'
+*NODE
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+11, 2, 0
+12, 3, 0
+13, 3, 1
+14, 2, 1
+15, 2.5, 0
+16, 3, 0.5
+17, 2.5, 1
+18, 2, 0.5
+*ELEMENT, TYPE=CPE4, ELSET=a
+1, 1, 2, 3, 4
+*ELEMENT, TYPE=CPE8, ELSET=b
+2, 11, 12, 13, 14, 15, 16, 17, 18
+*NSET, NSET=base
+1, 2, 11, 12, 15
+*SURFACE, NAME=top
+1, S3
+2, S3
+EOF_INP
+  cat > "$work/mix.nml" <<'EOF_NML'
+&mesh file = 'mix.inp' /
+&body name = 'a', young = 1000.0, poisson = 0.3, density = 1e-9 /
+&body name = 'b', young = 1000.0, poisson = 0.3, density = 1e-9 /
+&boundary set = 'base', type = 'fixed' /
+&boundary set = 'top', type = 'pressure', pressure = 10.0 /
+&time t_end = 1e-6 /
+EOF_NML
+  run --quiet --output out mix.nml
+  expect_code 0
+  hist=$work/out/mix.history.txt
+  cx=$(history_column "$hist" top_Fx)
+  cy=$(history_column "$hist" top_Fy)
+  if [ -z "$cx" ] || [ -z "$cy" ]; then
+    fail "no top_Fx/top_Fy column in $hist"
+  else
+    awk -v cx="$cx" -v cy="$cy" '
+      /^#/ { next }
+      { n++; ax = $cx < 0 ? -$cx : $cx; ay = $cy + 20; ay = ay < 0 ? -ay : ay
+        if (ax > 1e-12 || ay > 1e-12) { print "FAIL: row " n ": top force (" $cx ", " $cy "), expected (0, -20)"; bad = 1 } }
+      END { if (!n) { print "FAIL: no history rows"; bad = 1 }
+            if (!bad) print n " rows, top force (0, -20) in each"; exit bad }' "$hist" \
+      && pass "load total over Q4 and Q8 edges" || fail "load total over Q4 and Q8 edges"
+  fi
+  ;;
+
 *)
   echo "unknown case '$case_name'" >&2
   exit 1
