@@ -587,15 +587,7 @@ contains
         tvec = pair%work%tau(j)*pair%cs%tangent(:, j)
         do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
           p = pair%cs%ent_node(e)
-          if (.not. pair%mark(p)) then
-            pair%mark(p) = .true.
-            nt = nt + 1
-            pair%touched(nt) = p
-            pair%fc(1, p) = 0.0_wp
-            pair%fc(2, p) = 0.0_wp
-            pair%ft(1, p) = 0.0_wp
-            pair%ft(2, p) = 0.0_wp
-          end if
+          if (.not. pair%mark(p)) call first_touch(pair, p, nt)
           pair%fc(:, p) = pair%fc(:, p) + pair%cs%ent_w(e)*fvec
           ! Frictionless: tau = 0 and ft stays 0 (its work below adds zeros).
           if (pair%mu > 0.0_wp) pair%ft(:, p) = pair%ft(:, p) + pair%cs%ent_w(e)*tvec
@@ -673,15 +665,7 @@ contains
       tau = pair%work%tau(j)
       do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
         p = pair%cs%ent_node(e)
-        if (.not. pair%mark(p)) then
-          pair%mark(p) = .true.
-          nt = nt + 1
-          pair%touched(nt) = p
-          pair%fc(1, p) = 0.0_wp
-          pair%fc(2, p) = 0.0_wp
-          pair%ft(1, p) = 0.0_wp
-          pair%ft(2, p) = 0.0_wp
-        end if
+        if (.not. pair%mark(p)) call first_touch(pair, p, nt)
         v = pair%cs%ent_v(:, e)
         tv = [v(2), -v(1)]
         pair%fc(:, p) = pair%fc(:, p) + (lam*v + tau*tv)
@@ -689,4 +673,17 @@ contains
       end do
     end do
   end subroutine entry_forces
+
+  !> A node met for the first time this step by a row of apply_correction or
+  !> entry_forces: listed among the touched nodes, its forces started at 0.
+  subroutine first_touch(pair, p, nt)
+    type(contact_pair_t), intent(inout) :: pair
+    integer, intent(in) :: p
+    integer, intent(inout) :: nt
+    pair%mark(p) = .true.
+    nt = nt + 1
+    pair%touched(nt) = p
+    pair%fc(:, p) = 0.0_wp
+    pair%ft(:, p) = 0.0_wp
+  end subroutine first_touch
 end module raccord_contact_pair

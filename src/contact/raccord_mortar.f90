@@ -675,7 +675,7 @@ contains
     type(mortar_work_t), intent(inout) :: w
     integer :: nen, nenm, nb, ib, g, a, b, cm
     real(wp) :: xm(2, 3), s0, s1, bounds(4), brk(2), xi, wgt, ps(2), ts(2), n(2), dn(2), eta, &
-      pm(2), tm(2), dg, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3), nu(2), mvec(2, 3, 3)
+      pm(2), tm(2), dg, gap, ns(3), dns(3), nm(3), dnm(3), psi(3), mloc(3, 3), nu(2), mvec(2, 3, 3)
 
     nen = slave%nen_seg
     nenm = master%nen_seg
@@ -698,8 +698,8 @@ contains
     eta = intersect_ray(nenm, xm, ps, n)
     call segment_point(nenm, xm, eta, pm, tm)
     if (dot_product([tm(2), -tm(1)], n) >= 0.0_wp) return
-    dg = dot_product(pm - ps, n)
-    if (dg > open_reach .or. dg < -reach) return
+    gap = dot_product(pm - ps, n)
+    if (gap > open_reach .or. gap < -reach) return
     ! Slave nodes whose own point faces this master segment.
     do a = 1, nen
       if (NODE_XI(a) >= s0 - XI_COVER .and. NODE_XI(a) <= s1 + XI_COVER) w%covered(w%pos(a, k)) = .true.
