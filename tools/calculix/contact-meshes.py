@@ -151,6 +151,11 @@ CASES = {
                                               shift=(123.4, -56.7)),
     'hertz_q4_nts_block_alu_rot30_drive': hertz(1, 'node_to_segment', 'P1', 'block_top', 0.1, E_cyl=70000.0,
                                                 rot=-30.0, drive=0.12),
+    # a thickness other than 1: the contact stresses are per unit area
+    # (they read t times too large before the fix of this commit)
+    'hertz_q4_mortar_p1_block_pstress_t4': hertz(1, 'mortar', 'P1', 'block_top', 0.1, hyp='plane_stress',
+                                                 thickness=4.0),
+    'hertz_q4_nts_cyl_t2p5': hertz(1, 'node_to_segment', 'P1', 'cyl_arc', 0.1, thickness=2.5),
     'hertz_q4_mortar_p1_block_coarse': hertz(1, 'mortar', 'P1', 'block_top', 0.2),
     'axi_q4_mortar_p1': axi(1, 'mortar', 'P1', 0.1),
     'axi_q4_mortar_p1_inp': axi(1, 'mortar', 'P1', 0.1, inp=True),
@@ -161,6 +166,9 @@ CASES = {
     'patch_q8q4_mortar_p1_upper_inp': patch(2, 1, 'mortar', 'P1', 'upper_bottom', inp=True),
     'patch_q4q4_mortar_p1_upper_inp': patch(1, 1, 'mortar', 'P1', 'upper_bottom', inp=True),
     'patch_q4q8_nts_upper': patch(1, 2, 'node_to_segment', 'P1', 'upper_bottom'),
+    'patch_q8q4_mortar_p1_lower_t2p5': patch(2, 1, 'mortar', 'P1', 'lower_top', thickness=2.5),
+    'patch_q4q8_mortar_p0_upper_pstress_t0p2_inp': patch(1, 2, 'mortar', 'P0', 'upper_bottom', hyp='plane_stress',
+                                                         thickness=0.2, inp=True),
 }
 
 # the quick CTest: coarse meshes (a/h about 5), one case per reader path
@@ -170,7 +178,7 @@ CASES.update({
     'axi_q4_mortar_p1_inp_coarse': axi(1, 'mortar', 'P1', 0.2, inp=True),
 })
 QUICK = ['hertz_q4_mortar_p1_cyl_inp_coarse', 'hertz_q4_nts_block_rot90_coarse', 'axi_q4_mortar_p1_inp_coarse',
-         'patch_q8q4_mortar_p1_upper_inp']
+         'patch_q8q4_mortar_p1_upper_inp', 'patch_q8q4_mortar_p1_lower_t2p5']
 
 
 def gmsh_mesh(text, wd, name, order, fmt='msh41'):
@@ -328,8 +336,10 @@ def write_msh22(path, pts, quads, lines, seed):
 
 
 def deck(case, meshfile):
-    hyp = 'axisymmetric' if case['kind'] == 'axi' else 'plane_strain'
+    hyp = 'axisymmetric' if case['kind'] == 'axi' else case.get('hyp', 'plane_strain')
     mat = "young = %r, poisson = %r, density = %r, hypothesis = '%s'" % (case['E'], case['nu'], case['rho'], hyp)
+    if 'thickness' in case:
+        mat += ', thickness = %r' % case['thickness']
     mat_cyl = mat.replace('young = %r' % case['E'], 'young = %r' % case.get('E_cyl', case['E']))
     if case['kind'] == 'patch':
         bodies, ramp, t_end, alpha = ('lower', 'upper'), 2.0e-4, 5.0e-4, 1.5e5
@@ -430,13 +440,16 @@ def judge(case, prof):
         length = xy[:, 0].max() - xy[:, 0].min()
         pc = case['p'] * 10.0 / length
         err = np.abs(p_on - pc).max() / pc
-        fy = abs(prof['force'][1]) / (10.0 * case['p']) - 1.0
+        # the resultant is that of the whole thickness t, as the reactions
+        fy = abs(prof['force'][1]) / (10.0 * case['p'] * case.get('thickness', 1.0)) - 1.0
         bound = 1e-8 if mortar else 0.5
         ok = err <= bound and abs(fy) <= 1e-8 and on.all()
         return ('closed %d/%d, max|p - p L/L_deformed|/p %.2e (bound %.0e), |Fy|/(p L) - 1 %.1e'
                 % (on.sum(), len(st), err, bound, fy)), ok
     E, nu, R = case['E'], case['nu'], case['R']
     Es = E / (2.0 * (1.0 - nu ** 2))
+    if case.get('hyp') == 'plane_stress':
+        Es = E / 2.0
     th = math.radians(case.get('rot', 0.0))
     if th or 'shift' in case:
         # back to the frame of the unturned scene
@@ -454,7 +467,8 @@ def judge(case, prof):
     if case['kind'] == 'axi':
         dang = 0.0      # a ring sum of radial forces is no resultant
     if case['kind'] == 'hertz':
-        F = math.hypot(*prof['force'])
+        # per unit thickness (the resultant is that of the whole thickness)
+        F = math.hypot(*prof['force']) / case.get('thickness', 1.0)
         # a driven top: Hertz for the load the contact carries
         P = F if case.get('drive') else case['p'] * 2.0 * R
         a = math.sqrt(4.0 * P * R / (math.pi * Es))
