@@ -44,6 +44,11 @@ module raccord_contact_pair
     ! Per slave surface node, kept between steps (status is the warm start).
     integer, allocatable :: status(:)
     real(wp), allocatable :: sigma(:), gap(:), lam_n(:), lam_t(:), pressure(:), shear(:), slip(:), trib(:)
+    !> Out-of-plane thickness of the slave body (1 when axisymmetric). The
+    !> solver's multipliers and forces are those of the whole thickness
+    !> (the masses carry it); the per-node results above are per unit of
+    !> it, so that pressure and shear are stresses whatever the thickness.
+    real(wp) :: thickness = 1.0_wp
     ! The same for mortar's corner rows (constraint index nnode + 1, + 2:
     ! the master's first and last corner against the slave face).
     integer :: corner_status(2) = ST_OPEN
@@ -135,6 +140,7 @@ contains
           return
         end if
         pair%name = trim(spec%slave) // '/' // trim(spec%master)
+        if (.not. model%axisymmetric) pair%thickness = scene%bodies(bs)%thickness
         pair%method = spec%method
         pair%multiplier = spec%multiplier
         pair%weighted = spec%weighted
@@ -386,19 +392,24 @@ contains
       ! conditions = 'weighted': gn is the weighted gap; over the length
       ! the row carries, a mean gap
       if (pair%cs%weighted .and. pair%cs%length(j) > lmin) pair%gap(i) = pair%gap(i)/pair%cs%length(j)
-      pair%lam_n(i) = pair%work%lam(j)
-      pair%lam_t(i) = pair%work%tau(j)
+      ! Per unit thickness: the multipliers act on the whole thickness t
+      ! of a plane body (its masses and loads carry t), so the stress is
+      ! the weighted multiplier over the length and over t; with t = 1 the
+      ! division is exact.
+      pair%lam_n(i) = pair%work%lam(j)/pair%thickness
+      pair%lam_t(i) = pair%work%tau(j)/pair%thickness
       pair%slip(i) = pair%work%gt(j)
-      ! Contact stress: weighted multiplier over the length it acts on.
+      ! Contact stress: weighted multiplier over the length (and the
+      ! thickness) it acts on.
       if (pair%cs%length(j) > lmin) then
-        pair%pressure(i) = pair%work%fn(j)/pair%cs%length(j)
-        pair%shear(i) = pair%work%ft(j)/pair%cs%length(j)
+        pair%pressure(i) = pair%work%fn(j)/(pair%cs%length(j)*pair%thickness)
+        pair%shear(i) = pair%work%ft(j)/(pair%cs%length(j)*pair%thickness)
       else if (pair%method == METHOD_MORTAR) then
         ! Axisymmetric quadratic edge, end node on the axis: its ring weight
         ! int N r ds is 0 (so is its share of a uniform pressure); the
         ! multiplier is the pressure there (doc/theory-axisymmetric.md).
-        pair%pressure(i) = pair%work%lam(j)
-        pair%shear(i) = pair%work%tau(j)
+        pair%pressure(i) = pair%lam_n(i)
+        pair%shear(i) = pair%lam_t(i)
       end if
       pair%normal_sum = pair%normal_sum + pair%work%fn(j)
       pair%tangent_sum = pair%tangent_sum + pair%work%ft(j)
