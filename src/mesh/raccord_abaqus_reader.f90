@@ -23,7 +23,7 @@ module raccord_abaqus_reader
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, label_key, unquoted_key
   use raccord_int_map, only: int_map_t
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
-    split_fields, parse_int, parse_real
+    split_fields, parse_int, parse_real, int_fault
   use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
     add_group, add_member, add_draft_surface, find_draft_surface, add_edge_by_side
   implicit none
@@ -753,7 +753,7 @@ contains
     ok = .false.
     if (f(k) <= l(k)) call parse_int(sl%text(f(k):l(k)), value, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
-      ') is "' // clip(sl%text(f(k):l(k))) // '", not an integer')
+      ') is "' // clip(sl%text(f(k):l(k))) // '", ' // int_fault(sl%text(f(k):l(k))))
   end subroutine field_int
 
   subroutine field_real(sl, d, f, l, k, what, value, err)
