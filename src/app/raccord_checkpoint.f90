@@ -19,7 +19,7 @@ module raccord_checkpoint
   use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
-  use raccord_strings, only: str
+  use raccord_strings, only: str, append_text
   use raccord_log, only: log_warn
   use raccord_version, only: raccord_version_string
   use raccord_scene, only: scene_t
@@ -65,10 +65,15 @@ contains
     type(scene_t), intent(in) :: scene
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: text
-    integer :: unit, ios, k
+    integer :: unit, ios, k, n
     character(len=1024) :: line
     character(len=256) :: msg
+    character(len=:), allocatable :: buf
     logical :: keep
+    ! buf(1:n) grows by doubling (append_text): text = text // line copied
+    ! the whole echo at each line, and a deck of 10^4 groups (an echo of
+    ! 10^5 lines) spent most of a minute here before the first step
+    n = 0
     text = ''
     open(newunit=unit, status='scratch', action='readwrite', form='formatted', iostat=ios, iomsg=msg)
     if (ios /= 0) then
@@ -85,9 +90,10 @@ contains
       do k = 1, size(FREE_KEYS)
         if (index(adjustl(line), trim(FREE_KEYS(k)) // ' =') == 1) keep = .false.
       end do
-      if (keep) text = text // trim(line) // new_line('a')
+      if (keep) call append_text(buf, n, trim(line) // new_line('a'))
     end do
     close(unit)
+    if (n > 0) text = buf(1:n)
   end function scene_identity
 
   !> The mesh as a restart compares it: the deck names the mesh file by its

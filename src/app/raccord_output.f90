@@ -4,7 +4,7 @@ module raccord_output
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
   use raccord_log, only: log_info, log_raw, log_warn
-  use raccord_strings, only: str
+  use raccord_strings, only: str, append_text
   use raccord_mesh, only: nodes_per_element
   use raccord_model, only: model_t
   use raccord_state, only: state_t
@@ -478,10 +478,10 @@ contains
     character(len=*), intent(in) :: stem
     type(results_t), intent(inout) :: res
     type(error_t), intent(inout) :: err
-    integer :: unit, ios
+    integer :: unit, ios, n
     character(len=1024) :: line
     character(len=256) :: msg
-    character(len=:), allocatable :: text
+    character(len=:), allocatable :: text, buf
     open(newunit=unit, file=stem // '.scene.nml', status='replace', action='readwrite', iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call raise_error(err, EXIT_IO, 'cannot write ' // stem // '.scene.nml: ' // trim(msg))
@@ -490,13 +490,16 @@ contains
     call write_scene(scene, unit, err)
     if (err%failed()) return
     rewind(unit)
-    text = ''
+    ! buf(1:n) grows by doubling (append_text), linear in the echo's size
+    n = 0
     do
       read(unit, '(a)', iostat=ios) line
       if (ios /= 0) exit
-      text = text // trim(line) // new_line('a')
+      call append_text(buf, n, trim(line) // new_line('a'))
     end do
     close(unit)
+    text = ''
+    if (n > 0) text = buf(1:n)
     call results_set_text(res, 'scene', text, err)
     if (err%failed()) return
     call results_set_text(res, 'scene_path', scene%path, err)

@@ -5,7 +5,7 @@ module raccord_strings
   implicit none
   private
 
-  public :: str, lower, starts_with, ends_with, clipped, text_flaw
+  public :: str, lower, starts_with, ends_with, clipped, text_flaw, append_text
 
   !> Convert a number to its shortest readable text.
   interface str
@@ -13,6 +13,27 @@ module raccord_strings
   end interface str
 
 contains
+
+  !> Append piece to buf(1:n), growing buf by doubling: amortised linear,
+  !> where buf = buf // piece copies the whole text at each call (quadratic
+  !> over the lines of a long scene echo). The caller ends with buf(1:n).
+  pure subroutine append_text(buf, n, piece)
+    character(len=:), allocatable, intent(inout) :: buf
+    integer, intent(inout) :: n
+    character(len=*), intent(in) :: piece
+    character(len=:), allocatable :: grown
+    if (.not. allocated(buf)) then
+      allocate(character(len=max(256, 2*len(piece))) :: buf)
+      n = 0
+    end if
+    if (n + len(piece) > len(buf)) then
+      allocate(character(len=2*(n + len(piece))) :: grown)
+      grown(1:n) = buf(1:n)
+      call move_alloc(grown, buf)
+    end if
+    buf(n + 1:n + len(piece)) = piece
+    n = n + len(piece)
+  end subroutine append_text
 
   pure function str_int(i) result(s)
     integer, intent(in) :: i

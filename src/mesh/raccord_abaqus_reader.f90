@@ -23,7 +23,7 @@ module raccord_abaqus_reader
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, label_key, unquoted_key
   use raccord_int_map, only: int_map_t
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
-    split_fields, parse_int, parse_real
+    split_fields, parse_int, parse_real, int_fault
   use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
     add_group, add_member, add_draft_surface, find_draft_surface, add_edge_by_side
   implicit none
@@ -97,8 +97,8 @@ contains
     type(error_t), intent(inout) :: err
     type(text_file_t) :: tf
     type(source_line_t) :: sl
-    character(len=:), allocatable :: pending
-    integer :: ifile, pending_no
+    character(len=:), allocatable :: pending, buf, grown
+    integer :: ifile, pending_no, nb
     logical :: eof, have_pending
 
     call open_text_file(tf, path, err)
@@ -119,18 +119,34 @@ contains
         sl%line = tf%line_no
       end if
       sl%ifile = ifile
-      do while (ends_with_comma(sl%text))
-        call next_raw_line(tf, pending, eof, err)
-        if (err%failed()) exit lines
-        if (eof) exit
-        if (pending(1:1) == '*') then
-          ! a keyword cannot continue a line: the comma was only trailing
-          have_pending = .true.
-          pending_no = tf%line_no
-          exit
-        end if
-        sl%text = sl%text // ' ' // pending
-      end do
+      if (ends_with_comma(sl%text)) then
+        ! The joined text grows in a buffer of doubling size (nb in use):
+        ! joining by concatenation copied it at every line, and data of
+        ! 10^5 lines each ending with a comma took minutes.
+        nb = len(sl%text)
+        allocate(character(len=max(256, 2*nb)) :: buf)
+        buf(1:nb) = sl%text
+        do while (ends_with_comma(buf(1:nb)))
+          call next_raw_line(tf, pending, eof, err)
+          if (err%failed()) exit lines
+          if (eof) exit
+          if (pending(1:1) == '*') then
+            ! a keyword cannot continue a line: the comma was only trailing
+            have_pending = .true.
+            pending_no = tf%line_no
+            exit
+          end if
+          if (nb + 1 + len(pending) > len(buf)) then
+            allocate(character(len=2*(nb + 1 + len(pending))) :: grown)
+            grown(1:nb) = buf(1:nb)
+            call move_alloc(grown, buf)
+          end if
+          buf(nb + 1:nb + 1 + len(pending)) = ' ' // pending
+          nb = nb + 1 + len(pending)
+        end do
+        sl%text = buf(1:nb)
+        deallocate(buf)
+      end if
       if (sl%text(1:1) == '*') then
         call take_keyword(sl, path, d, st, depth, err)
       else
@@ -753,7 +769,7 @@ contains
     ok = .false.
     if (f(k) <= l(k)) call parse_int(sl%text(f(k):l(k)), value, ok)
     if (.not. ok) call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': field ' // str(k) // ' (' // what // &
-      ') is "' // clip(sl%text(f(k):l(k))) // '", not an integer')
+      ') is "' // clip(sl%text(f(k):l(k))) // '", ' // int_fault(sl%text(f(k):l(k))))
   end subroutine field_int
 
   subroutine field_real(sl, d, f, l, k, what, value, err)

@@ -18,7 +18,7 @@ module raccord_gmsh_reader
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8
   use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, pair_key, text_key
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, here, &
-    split_fields, parse_int, parse_real, check_count
+    split_fields, parse_int, parse_real, check_count, int_fault
   use raccord_mesh_draft, only: mesh_draft_t, add_file, add_node, add_element, add_group, add_member, &
     add_draft_surface, add_edge_by_nodes
   implicit none
@@ -45,6 +45,10 @@ module raccord_gmsh_reader
     ! list of (dim, entity, physical) triples; entities are few.
     integer :: nent = 0
     integer, allocatable :: ent(:,:)          !< (3, nent)
+    !> every entity of $Entities, with or without physical tags: tag_key(dim,
+    !> tag) -> the line that defines it (an element block must name one)
+    logical :: seen_entities = .false.
+    type(int_map_t) :: entity_line
     ! 2.2: repeats of one element for several physical groups
     type(int_map_t) :: seen_quads
   end type gmsh_state_t
@@ -251,19 +255,37 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: line
     integer, allocatable :: f(:), l(:), tmp(:,:)
-    integer :: nf, counts(4), dim, k, tag, nphys, first, p, phys
+    integer :: nf, counts(4), dim, k, tag, nphys, first, p, phys, prev
     call next_data_line(tf, 'Entities', 'the entity counts', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     do k = 1, 4
       call get_int(tf, line, f, l, k, 'entity count', counts(k), err)
     end do
     if (err%failed()) return
+    st%seen_entities = .true.
+    call map_init(st%entity_line, 16)
     do dim = 0, 3
       do k = 1, counts(dim + 1)
         call next_data_line(tf, 'Entities', 'entity of dimension ' // str(dim), k, counts(dim + 1), &
           line, f, l, nf, err)
         if (err%failed()) return
         call get_int(tf, line, f, l, 1, 'entity tag', tag, err)
+        if (err%failed()) return
+        ! Gmsh entity tags are positive and unique per dimension: a second
+        ! definition would give the elements of its blocks the physical
+        ! groups of both lines
+        if (tag <= 0) then
+          call raise_error(err, EXIT_INPUT, here(tf) // ': entity tag ' // str(tag) // ' (dimension ' // &
+            str(dim) // ') is not positive; Gmsh tags start at 1: the file is damaged, re-export the mesh')
+          return
+        end if
+        call map_insert(st%entity_line, tag_key(dim, tag), tf%line_no, prev)
+        if (prev /= 0) then
+          call raise_error(err, EXIT_INPUT, here(tf) // ': entity ' // str(tag) // ' of dimension ' // &
+            str(dim) // ' is defined a second time (first at line ' // str(prev) // '); each ' // &
+            'point, curve and surface is listed once: the file was edited or concatenated, re-export the mesh')
+          return
+        end if
         ! a point has x y z, the others a bounding box, before the physical count
         first = 5
         if (dim > 0) first = 8
@@ -413,6 +435,8 @@ contains
         call refuse_type(tf, gtype, err)
         return
       end if
+      call check_block_entity(tf, st, edim, etag, gtype, err)
+      if (err%failed()) return
       phys = pack(st%ent(3, 1:st%nent), st%ent(1, 1:st%nent) == edim .and. st%ent(2, 1:st%nent) == etag)
       do k = 1, n
         call next_data_line(tf, 'Elements', 'element', k, n, &
@@ -440,6 +464,48 @@ contains
     end if
     call expect_end(tf, 'Elements', err)
   end subroutine read_elements_41
+
+  !> A 4.1 element block takes the physical groups of its entity (edim,
+  !> etag): the entity must be one of $Entities (above the block), and of
+  !> the element type's dimension (a quadrilateral on a surface, a line on
+  !> a curve, a point on a point); otherwise its elements would fall in
+  !> no group, or in the groups of another dimension under their tags,
+  !> and the deck's sets go "not found" far from the cause.
+  subroutine check_block_entity(tf, st, edim, etag, gtype, err)
+    type(text_file_t), intent(in) :: tf
+    type(gmsh_state_t), intent(in) :: st
+    integer, intent(in) :: edim, etag, gtype
+    type(error_t), intent(inout) :: err
+    integer :: tdim
+    select case (gtype)
+    case (GMSH_QUAD4, GMSH_QUAD8); tdim = 2
+    case (GMSH_LINE2, GMSH_LINE3); tdim = 1
+    case default;                  tdim = 0
+    end select
+    if (edim /= tdim) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': a block of elements of type ' // str(gtype) // &
+        ' (dimension ' // str(tdim) // ') on an entity of dimension ' // str(edim) // ' (field 1 of the ' // &
+        'block line): each block holds the elements of one entity of their own dimension; the file ' // &
+        'is damaged, re-export the mesh')
+      return
+    end if
+    if (.not. st%seen_entities) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': this element block belongs to entity ' // &
+        str(etag) // ' of dimension ' // str(edim) // ', but no $Entities section comes before ' // &
+        '$Elements: MSH 4.1 keeps the physical groups in $Entities; re-export the mesh from Gmsh')
+      return
+    end if
+    if (etag <= 0) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': element block on entity tag ' // str(etag) // &
+        ' (field 2 of the block line): Gmsh tags start at 1; the file is damaged, re-export the mesh')
+      return
+    end if
+    if (map_get(st%entity_line, tag_key(edim, etag)) == 0) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': this element block belongs to entity ' // &
+        str(etag) // ' of dimension ' // str(edim) // ' (field 2 of the block line), which $Entities ' // &
+        'does not define: its elements would be in no physical group; the file was edited, re-export the mesh')
+    end if
+  end subroutine check_block_entity
 
   !> "$Elements" (2.2): count, then 'id type ntags tags... nodes...' lines.
   subroutine read_elements_22(tf, st, d, err)
@@ -743,7 +809,7 @@ contains
     if (f(k) <= l(k)) call parse_int(line(f(k):l(k)), value, ok)
     if (.not. ok) then
       call raise_error(err, EXIT_INPUT, here(tf) // ': field ' // str(k) // ' (' // what // ') is "' // &
-        clip(line(f(k):l(k))) // '", not an integer: the file is damaged, re-export the mesh')
+        clip(line(f(k):l(k))) // '", ' // int_fault(line(f(k):l(k))) // ': the file is damaged, re-export the mesh')
     end if
   end subroutine get_int
 

@@ -101,6 +101,10 @@ contains
   end subroutine check_plane
 
   !> File id -> draft index maps; a repeated id is an error at its second use.
+  !> Ids must be positive (Gmsh tags and Abaqus numbers start at 1): 0
+  !> stands for "no node" in a surface edge's mid node (draft_surface_t),
+  !> so a node 0 could not be told from a missing one, and a zero or
+  !> negative id is a damaged or hand-edited file; refused at its line.
   subroutine map_ids(d, node_map, elem_map, err)
     type(mesh_draft_t), intent(in) :: d
     type(int_map_t), intent(out) :: node_map, elem_map
@@ -108,6 +112,11 @@ contains
     integer :: k, prev
     call map_init(node_map, d%nnode)
     do k = 1, d%nnode
+      if (d%node_id(k) <= 0) then
+        call raise_error(err, EXIT_INPUT, where_text(d, d%node_file(k), d%node_line(k)) // &
+          ': node id ' // str(d%node_id(k)) // ' is not positive: ' // hint(d, 'positive_id'))
+        return
+      end if
       call map_insert(node_map, int(d%node_id(k), i8), k, prev)
       if (prev /= 0) then
         call raise_error(err, EXIT_INPUT, where_text(d, d%node_file(k), d%node_line(k)) // &
@@ -118,6 +127,11 @@ contains
     end do
     call map_init(elem_map, d%nelem)
     do k = 1, d%nelem
+      if (d%elem_id(k) <= 0) then
+        call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(k), d%elem_line(k)) // &
+          ': element id ' // str(d%elem_id(k)) // ' is not positive: ' // hint(d, 'positive_id'))
+        return
+      end if
       call map_insert(elem_map, int(d%elem_id(k), i8), k, prev)
       if (prev /= 0) then
         call raise_error(err, EXIT_INPUT, where_text(d, d%elem_file(k), d%elem_line(k)) // &
@@ -723,6 +737,13 @@ contains
       else
         s = 'in the .inp, list the corners counter-clockwise (e.g. 1,4,3,2 instead of 1,2,3,4; ' // &
           'for CPE8/CPS8 reorder the mid-side nodes to match)'
+      end if
+    case ('positive_id')
+      if (gmsh) then
+        s = 'Gmsh tags start at 1; the file was edited or written by another program: renumber from 1 ' // &
+          '(or mesh again and save from Gmsh)'
+      else
+        s = 'Abaqus node and element numbers start at 1: renumber from 1'
       end if
     case ('stray_edge')
       if (gmsh) then

@@ -11,7 +11,7 @@ module raccord_text_reader
   private
 
   public :: open_text_file, close_text_file, read_line, here, check_count
-  public :: split_fields, parse_int, parse_real
+  public :: split_fields, parse_int, parse_real, int_fault
 
   !> Longest line read (Gmsh and Abaqus lines are far shorter).
   integer, parameter :: MAX_LINE = 1000000
@@ -270,6 +270,23 @@ contains
     read(text, *, iostat=ios) value
     ok = ios == 0
   end subroutine parse_int
+
+  !> Why parse_int refused `text`: an integer's digits beyond the default
+  !> integer's range (a Gmsh tag or Abaqus id of 2^31 or more), or no
+  !> integer at all; for the readers' messages.
+  pure function int_fault(text) result(s)
+    character(len=*), intent(in) :: text
+    character(len=:), allocatable :: s
+    integer :: first
+    s = 'not an integer'
+    first = 1
+    if (len(text) > 0) then
+      if (text(1:1) == '-' .or. text(1:1) == '+') first = 2
+    end if
+    if (first > len(text)) return
+    if (verify(text(first:), '0123456789') /= 0) return
+    s = 'beyond the integer range of raccord''s ids and counts (-2147483648 to 2147483647)'
+  end function int_fault
 
   !> Parse a real field: digits, sign, point and exponent letters only, then
   !> a finite value.

@@ -20,6 +20,7 @@ module raccord_deck
   use raccord_log, only: log_warn
   use raccord_paths, only: path_dir, path_stem, path_join, absolute_path
   use raccord_deck_scan, only: deck_block_t, scan_deck, join_names
+  use raccord_int_map, only: int_map_t, map_init, map_insert, map_get, text_key
   use raccord_deck_checks, only: head, check_keys, unreadable, bad_value, missing_key, check_length, check_finite, &
     UNSET
   use raccord_deck_run, only: read_run, read_time, read_output
@@ -32,6 +33,11 @@ module raccord_deck
   private
 
   public :: read_scene, write_scene
+
+  !> A name to check for repeats (first_twin).
+  type :: label_t
+    character(len=:), allocatable :: s
+  end type label_t
 
   !> Groups a deck may hold, and which of them may appear only once.
   character(len=*), parameter :: GROUPS(*) = [character(len=12) :: 'run', 'mesh', 'body', 'boundary', &
@@ -187,28 +193,46 @@ contains
     type(scene_t), intent(in) :: scene
     integer, intent(in) :: body_blk(:), bc_blk(:), amp_blk(:)
     type(error_t), intent(inout) :: err
-    integer :: i, j
-    do i = 2, size(scene%bodies)
-      do j = 1, i - 1
-        if (scene%bodies(i)%name /= scene%bodies(j)%name) cycle
-        call bad_value(deck, blocks(body_blk(i)), scene%bodies(i)%name, 'name', &
-          'the name is already used by the &body at line ' // str(blocks(body_blk(j))%line), &
-          'give each body its own name', err)
-        return
-      end do
+    integer :: i, j, twin(2)
+    type(label_t), allocatable :: labels(:)
+    type(int_map_t) :: body_index, amp_index
+    ! filled one by one: gfortran 12 leaves the text empty in an array
+    ! constructor of label_t(...) values
+    allocate(labels(size(scene%bodies)))
+    do i = 1, size(labels)
+      labels(i)%s = scene%bodies(i)%name
     end do
-    do i = 2, size(scene%amplitudes)
-      do j = 1, i - 1
-        if (scene%amplitudes(i)%name /= scene%amplitudes(j)%name) cycle
-        call bad_value(deck, blocks(amp_blk(i)), scene%amplitudes(i)%name, 'name', &
-          'the name is already used by the &amplitude at line ' // str(blocks(amp_blk(j))%line), &
-          'give each amplitude its own name', err)
-        return
-      end do
+    twin = first_twin(labels, body_index)
+    if (twin(1) > 0) then
+      i = twin(1)
+      call bad_value(deck, blocks(body_blk(i)), scene%bodies(i)%name, 'name', &
+        'the name is already used by the &body at line ' // str(blocks(body_blk(twin(2)))%line), &
+        'give each body its own name', err)
+      return
+    end if
+    deallocate(labels)
+    allocate(labels(size(scene%amplitudes)))
+    do i = 1, size(labels)
+      labels(i)%s = scene%amplitudes(i)%name
     end do
+    twin = first_twin(labels, amp_index)
+    if (twin(1) > 0) then
+      i = twin(1)
+      call bad_value(deck, blocks(amp_blk(i)), scene%amplitudes(i)%name, 'name', &
+        'the name is already used by the &amplitude at line ' // str(blocks(amp_blk(twin(2)))%line), &
+        'give each amplitude its own name', err)
+      return
+    end if
     do i = 1, size(scene%bcs)
       if (len(scene%bcs(i)%amplitude) == 0) cycle
-      if (any([(scene%amplitudes(j)%name == scene%bcs(i)%amplitude, j = 1, size(scene%amplitudes))])) cycle
+      ! amp_index: name -> amplitude (first_twin above), so that each of
+      ! 10^4 boundaries finds its amplitude among 10^4 in O(1)
+      j = map_get(amp_index, text_key(scene%bcs(i)%amplitude))
+      if (j > 0) then
+        if (scene%amplitudes(j)%name == scene%bcs(i)%amplitude) cycle
+        ! two names of one text_key (rare): look the name up one by one
+        if (any([(scene%amplitudes(j)%name == scene%bcs(i)%amplitude, j = 1, size(scene%amplitudes))])) cycle
+      end if
       ! A near miss (the same name in another case) is named: deck names
       ! are case-sensitive, as the mesh's Gmsh names are.
       do j = 1, size(scene%amplitudes)
@@ -235,18 +259,48 @@ contains
     type(scene_t), intent(in) :: scene
     integer, intent(in) :: pair_blk(:)
     type(error_t), intent(inout) :: err
-    integer :: i, j
-    do i = 2, size(scene%contacts)
+    integer :: i, twin(2)
+    type(int_map_t) :: index
+    type(label_t), allocatable :: labels(:)
+    ! a NUL between the names: no two different pairs give one label
+    allocate(labels(size(scene%contacts)))
+    do i = 1, size(labels)
+      labels(i)%s = scene%contacts(i)%slave // achar(0) // scene%contacts(i)%master
+    end do
+    twin = first_twin(labels, index)
+    if (twin(1) == 0) return
+    i = twin(1)
+    call bad_value(deck, blocks(pair_blk(i)), scene%contacts(i)%slave // '/' // scene%contacts(i)%master, &
+      'master', 'the same slave and master as the &contact_pair at line ' // str(blocks(pair_blk(twin(2)))%line), &
+      'give each pair once (two-pass contact swaps slave and master in the second pair)', err)
+  end subroutine check_pairs
+
+  !> The first label equal to an earlier one, as [its index, the earlier
+  !> one's], or [0, 0] when all differ; index maps text_key of each label to
+  !> its first index. Linear through the map: comparing every pair made a
+  !> deck of 2*10^4 groups spend minutes here.
+  function first_twin(labels, index) result(twin)
+    type(label_t), intent(in) :: labels(:)
+    type(int_map_t), intent(out) :: index
+    integer :: twin(2)
+    integer :: i, j, prev
+    twin = 0
+    call map_init(index, size(labels))
+    do i = 1, size(labels)
+      call map_insert(index, text_key(labels(i)%s), i, prev)
+      if (prev == 0) cycle
+      if (labels(prev)%s == labels(i)%s) then
+        twin = [i, prev]
+        return
+      end if
+      ! two labels of one text_key (rare): compare with each earlier one
       do j = 1, i - 1
-        if (scene%contacts(i)%slave /= scene%contacts(j)%slave .or. &
-            scene%contacts(i)%master /= scene%contacts(j)%master) cycle
-        call bad_value(deck, blocks(pair_blk(i)), scene%contacts(i)%slave // '/' // scene%contacts(i)%master, &
-          'master', 'the same slave and master as the &contact_pair at line ' // str(blocks(pair_blk(j))%line), &
-          'give each pair once (two-pass contact swaps slave and master in the second pair)', err)
+        if (labels(j)%s /= labels(i)%s) cycle
+        twin = [i, j]
         return
       end do
     end do
-  end subroutine check_pairs
+  end function first_twin
 
   !> Bodies of one scene share the hypothesis family: all axisymmetric or
   !> all plane (plane strain and plane stress may mix; doc/scene-reference.md).

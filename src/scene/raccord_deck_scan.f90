@@ -39,6 +39,9 @@ module raccord_deck_scan
     character(len=:), allocatable :: text       !< the group's body, comments blanked, lines joined by a blank
     character(len=:), allocatable :: mask       !< text with quoted characters replaced by 'x'
     integer, allocatable :: line_of(:)          !< deck line of each character of text
+    !> while the group is open: characters of text, mask and line_of in use
+    !> (the three grow by doubling, and are cut to ntext when it closes)
+    integer :: ntext = 0
     type(deck_key_t), allocatable :: keys(:)
   contains
     procedure :: find => block_find
@@ -118,7 +121,7 @@ contains
     character(len=:), allocatable :: line, seg_text, seg_mask, name, hint
     character(len=256) :: msg
     character(len=1) :: c, quote
-    integer :: u, ios, lnum, i, j, nblock
+    integer :: u, ios, lnum, i, j, nblock, ns
     logical :: in_group, in_quote, at_end, is_folder, exists
     integer(i8) :: nbytes
     type(deck_block_t), allocatable :: grown(:)
@@ -173,9 +176,16 @@ contains
       if (lnum == 1 .and. len(line) >= 3) then
         if (line(1:3) == achar(239) // achar(187) // achar(191)) line = line(4:)
       end if
-      ! The segment of this line that belongs to the open group, as text and mask.
-      seg_text = ''
-      seg_mask = ''
+      ! The segment of this line that belongs to the open group, as text and
+      ! mask: seg_text(1:ns), seg_mask(1:ns). Each character of the line adds
+      ! at most one to them, so buffers of the line's length (plus the blank
+      ! that joins lines) hold them, and the scan stays linear in the line:
+      ! appending one character at a time to a growing string copied the
+      ! whole segment each time, and a deck line of 10^5 to 10^6 characters
+      ! (the line limit of read_line) took minutes.
+      if (allocated(seg_text)) deallocate(seg_text, seg_mask)
+      allocate(character(len=len(line) + 1) :: seg_text, seg_mask)
+      ns = 0
       i = 1
       chars: do while (i <= len(line))
         c = line(i:i)
@@ -225,30 +235,29 @@ contains
           nblock = nblock + 1
           blocks(nblock)%group = name
           blocks(nblock)%line = lnum
-          blocks(nblock)%text = ''
-          blocks(nblock)%mask = ''
-          allocate(blocks(nblock)%line_of(0))
+          allocate(character(len=256) :: blocks(nblock)%text, blocks(nblock)%mask)
+          allocate(blocks(nblock)%line_of(256))
+          blocks(nblock)%ntext = 0
           in_group = .true.
           i = j
           cycle chars
         end if
 
         if (in_quote) then
-          seg_text = seg_text // c
+          call put(c, c)
           if (c == quote) then
             if (i < len(line)) then
               if (line(i+1:i+1) == quote) then
                 ! A doubled quote is a quote character inside the string.
-                seg_text = seg_text // c
-                seg_mask = seg_mask // 'xx'
+                seg_mask(ns:ns) = 'x'
+                call put(c, 'x')
                 i = i + 2
                 cycle chars
               end if
             end if
             in_quote = .false.
-            seg_mask = seg_mask // c
           else
-            seg_mask = seg_mask // 'x'
+            seg_mask(ns:ns) = 'x'
           end if
           i = i + 1
           cycle chars
@@ -260,13 +269,12 @@ contains
         case ('''', '"')
           in_quote = .true.
           quote = c
-          seg_text = seg_text // c
-          seg_mask = seg_mask // c
+          call put(c, c)
         case ('/')
-          call append_segment(blocks(nblock), seg_text, seg_mask, lnum)
-          seg_text = ''
-          seg_mask = ''
+          call append_segment(blocks(nblock), seg_text(1:ns), seg_mask(1:ns), lnum)
+          ns = 0
           in_group = .false.
+          call close_block(blocks(nblock))
           call find_keys(path, blocks(nblock), err)
           if (err%failed()) exit lines
         case ('&')
@@ -281,10 +289,10 @@ contains
                 c = line(j:j)
               end if
               if (.not. is_name_char(c)) then
-                call append_segment(blocks(nblock), seg_text, seg_mask, lnum)
-                seg_text = ''
-                seg_mask = ''
+                call append_segment(blocks(nblock), seg_text(1:ns), seg_mask(1:ns), lnum)
+                ns = 0
                 in_group = .false.
+                call close_block(blocks(nblock))
                 call find_keys(path, blocks(nblock), err)
                 if (err%failed()) exit lines
                 i = j
@@ -300,14 +308,11 @@ contains
               exit lines
             end if
           end if
-          seg_text = seg_text // c
-          seg_mask = seg_mask // c
+          call put(c, c)
         case (achar(9))
-          seg_text = seg_text // ' '
-          seg_mask = seg_mask // ' '
+          call put(' ', ' ')
         case default
-          seg_text = seg_text // c
-          seg_mask = seg_mask // c
+          call put(c, c)
         end select
         i = i + 1
       end do chars
@@ -325,7 +330,10 @@ contains
         exit lines
       end if
       ! Lines are joined by a blank, so a value never runs into the next line.
-      if (in_group) call append_segment(blocks(nblock), seg_text // ' ', seg_mask // ' ', lnum)
+      if (in_group) then
+        call put(' ', ' ')
+        call append_segment(blocks(nblock), seg_text(1:ns), seg_mask(1:ns), lnum)
+      end if
     end do lines
     close(u, iostat=ios)
 
@@ -340,6 +348,16 @@ contains
     allocate(grown(nblock))
     grown(1:nblock) = blocks(1:nblock)
     call move_alloc(grown, blocks)
+
+  contains
+
+    !> One character of the line into the segment, as text and mask.
+    subroutine put(t, m)
+      character(len=1), intent(in) :: t, m
+      ns = ns + 1
+      seg_text(ns:ns) = t
+      seg_mask(ns:ns) = m
+    end subroutine put
   end subroutine scan_deck
 
   !> Read one line of any length; at_end is set at the end of the file.
@@ -382,15 +400,47 @@ contains
     end if
   end subroutine read_line
 
+  !> Append a line's segment to the open block. text, mask and line_of
+  !> grow by doubling (block%ntext in use), so a group of 10^5 lines reads
+  !> in linear time: appending by concatenation copied the whole group at
+  !> each line.
   subroutine append_segment(block, seg_text, seg_mask, lnum)
     type(deck_block_t), intent(inout) :: block
     character(len=*), intent(in) :: seg_text, seg_mask
     integer, intent(in) :: lnum
-    integer :: k
-    block%text = block%text // seg_text
-    block%mask = block%mask // seg_mask
-    block%line_of = [block%line_of, (lnum, k = 1, len(seg_text))]
+    character(len=:), allocatable :: t, m
+    integer, allocatable :: lines(:)
+    integer :: n, cap
+    n = block%ntext
+    cap = len(block%text)
+    if (n + len(seg_text) > cap) then
+      do while (n + len(seg_text) > cap)
+        cap = 2*cap
+      end do
+      allocate(character(len=cap) :: t, m)
+      allocate(lines(cap))
+      t(1:n) = block%text(1:n)
+      m(1:n) = block%mask(1:n)
+      lines(1:n) = block%line_of(1:n)
+      call move_alloc(t, block%text)
+      call move_alloc(m, block%mask)
+      call move_alloc(lines, block%line_of)
+    end if
+    block%text(n + 1:n + len(seg_text)) = seg_text
+    block%mask(n + 1:n + len(seg_text)) = seg_mask
+    block%line_of(n + 1:n + len(seg_text)) = lnum
+    block%ntext = n + len(seg_text)
   end subroutine append_segment
+
+  !> A closed block: text, mask and line_of cut to the characters in use.
+  subroutine close_block(block)
+    type(deck_block_t), intent(inout) :: block
+    integer :: n
+    n = block%ntext
+    block%text = block%text(1:n)
+    block%mask = block%mask(1:n)
+    block%line_of = block%line_of(1:n)
+  end subroutine close_block
 
   !> Find the keys of a closed block: each '=' outside quotes ends a key
   !> designator "name" or "name(subscript)". The values of a key run up to
@@ -399,11 +449,18 @@ contains
     character(len=*), intent(in) :: path
     type(deck_block_t), intent(inout) :: block
     type(error_t), intent(inout) :: err
-    type(deck_key_t) :: keys(len(block%mask))
+    type(deck_key_t), allocatable :: keys(:)
     character(len=:), allocatable :: here
     integer :: p, q, s, e, depth, nkey, k
 
     here = path // ':'
+    ! one key per '=' outside quotes (an array of the block's length, as
+    ! before, was some 80 bytes per character of the group)
+    nkey = 0
+    do p = 1, len(block%mask)
+      if (block%mask(p:p) == '=') nkey = nkey + 1
+    end do
+    allocate(keys(nkey))
     nkey = 0
     do p = 1, len(block%mask)
       if (block%mask(p:p) /= '=') cycle

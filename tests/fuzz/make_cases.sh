@@ -52,8 +52,9 @@
 #   make_cases_features.sh (axi, finite, plastic, pairs, loops, mscale,
 #   abaqus, gmshphys, restart, fmutate), described there, and of
 #   make_cases_names.sh (names, bounds), make_cases_files.sh (special,
-#   longtext, manysets, inpgeom, ...) and make_cases_deck.sh
-#   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval).
+#   longtext, manysets, inpgeom, ...), make_cases_deck.sh
+#   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval) and
+#   make_cases_tags.sh (ids, entities, slowtext).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -818,5 +819,8 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 . "$(dirname "$0")/make_cases_files.sh"
 # What the deck's text may hold: names the results cannot hold, described there.
 . "$(dirname "$0")/make_cases_deck.sh"
+# Ids and Gmsh 4.1 entities a mesh refers to, and inputs whose reading time
+# grew with the square of their size, described there.
+. "$(dirname "$0")/make_cases_tags.sh"
 
 echo "make_cases: $ncase cases in $cases"
