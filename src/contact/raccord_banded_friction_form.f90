@@ -70,6 +70,7 @@ contains
     call ensure_i2(w%zcol, ZMAX, m)
     call ensure2(w%zval, ZMAX, m)
     call ensure1(w%xr, m)
+    call ensure1(w%rowsc, 2*m)
     call ensure_i(w%it, m)
     call ensure_i(w%ulist, m)
     call ensure_i(w%ztcnt, m)
@@ -442,8 +443,8 @@ contains
     type(solver_work_t), intent(inout) :: w     !< (its ab moved out into the argument ab)
     real(wp), intent(inout) :: ab(2*kl + ku + 1, n)   !< w%ab's storage as one contiguous block
     integer, intent(out) :: info
-    integer :: m, i, k, kv, r, c, b, rn, rt, cn, ct
-    real(wp) :: ann, ant, atn, att, sc
+    integer :: m, i, k, kv, rn, rt, cn, ct
+    real(wp) :: ann, ant, atn, att
     m = cs%m
     info = 0
     kv = kl + ku + 1
@@ -489,27 +490,13 @@ contains
         call add_block(w%tcnt(i), w%tcol(:, i), w%tval(:, i), w%tcnt(k), w%tcol(:, k), w%tval(:, k), att)
       end do
     end do
-    do r = 1, n
-      sc = 0.0_wp
-      do c = w%fcol(r), w%lcol(r)
-        sc = max(sc, abs(ab(kv + r - c, c)))
-      end do
-      do b = 1, nb
-        sc = max(sc, abs(w%bc(r, b)))
-      end do
-      if (sc <= 0.0_wp) then
-        info = -5
-        return
-      end if
-      sc = 1.0_wp/sc
-      do c = w%fcol(r), w%lcol(r)
-        ab(kv + r - c, c) = ab(kv + r - c, c)*sc
-      end do
-      do b = 1, nb
-        w%bc(r, b) = w%bc(r, b)*sc
-      end do
-      w%rhs(r) = w%rhs(r)*sc
-    end do
+    ! Row scaling, column by column (contiguous in the band storage; by
+    ! rows it ran along the band's diagonals, a cache line per entry):
+    ! rowsc(r), the largest magnitude in row r over B and C, then
+    ! 1/rowsc(r) times each entry of the row, the same factor per entry as
+    ! row by row (the band outside the rows' profiles is zero). Issue #16,
+    ! sixth pass.
+    call scale_rows(n, nb, kl, ku, size(w%bc, 1), ab, w%bc, w%rhs, w%rowsc, info)
   contains
     subroutine add_rhs(cnt, col, val, g)
       integer, intent(in) :: cnt, col(:)
@@ -551,6 +538,49 @@ contains
       end do
     end subroutine add_block
   end subroutine friction_matrix
+
+  !> Scale the banded rows of friction_matrix to unit largest entry over B
+  !> (band storage ab) and C (bc): info = -5 when a row is zero.
+  subroutine scale_rows(n, nb, kl, ku, ldb, ab, bc, rhs, rowsc, info)
+    integer, intent(in) :: n, nb, kl, ku, ldb
+    real(wp), intent(inout) :: ab(2*kl + ku + 1, n), bc(ldb, *), rhs(n)
+    real(wp), intent(out) :: rowsc(n)     !< scratch: the row scales
+    integer, intent(out) :: info
+    integer :: kv, r, c, b
+    info = 0
+    kv = kl + ku + 1
+    rowsc(1:n) = 0.0_wp
+    do c = 1, n
+      do r = max(1, c - ku), min(n, c + kl)
+        rowsc(r) = max(rowsc(r), abs(ab(kv + r - c, c)))
+      end do
+    end do
+    do b = 1, nb
+      do r = 1, n
+        rowsc(r) = max(rowsc(r), abs(bc(r, b)))
+      end do
+    end do
+    do r = 1, n
+      if (rowsc(r) <= 0.0_wp) then
+        info = -5
+        return
+      end if
+      rowsc(r) = 1.0_wp/rowsc(r)
+    end do
+    do c = 1, n
+      do r = max(1, c - ku), min(n, c + kl)
+        ab(kv + r - c, c) = ab(kv + r - c, c)*rowsc(r)
+      end do
+    end do
+    do b = 1, nb
+      do r = 1, n
+        bc(r, b) = bc(r, b)*rowsc(r)
+      end do
+    end do
+    do r = 1, n
+      rhs(r) = rhs(r)*rowsc(r)
+    end do
+  end subroutine scale_rows
 
   !> Solve [B C; D' E] [x; y] = [rhs; bg] in place (x in rhs, y in bg):
   !> B by the band LU, then the border unknowns from the Schur complement

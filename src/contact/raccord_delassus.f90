@@ -156,7 +156,14 @@ contains
     end do
   end subroutine pair_sums_normal
 
-  !> The four blocks of delassus (n and t of each row), as pair_sums_normal.
+  !> The four blocks of delassus (n and t of each row). Knn as
+  !> pair_sums_normal (both orders of a pair with their own products, bit
+  !> for bit the frictionless Knn); Knt, Ktn and Ktt summed for one order of
+  !> each pair (d = jb - ja > 0) and mirrored after the loop: K is
+  !> symmetric, Ktt(jb, ja) = Ktt(ja, jb) and Knt(jb, ja) = t_a M^-1 n_b =
+  !> Ktn(ja, jb) (issue #16, sixth pass: three of the eight products and
+  !> read-modify-writes of a pair saved; the tangential blocks are now
+  !> exactly symmetric instead of to round-off).
   subroutine pair_sums_friction(m, kbs, ncap, nn, nent, ntouched, touched, node_ptr, node_last, &
       node_row, node_w, normal, tangent, minv, alpha, h_ratio, h, knn, knt, ktn, ktt)
     integer, intent(in) :: m, kbs, ncap, nn, nent, ntouched
@@ -166,7 +173,7 @@ contains
     real(wp), intent(inout) :: ktn(-kbs:kbs, ncap), ktt(-kbs:kbs, ncap)
     integer :: t, p, a, b, ja, jb, d
     real(wp) :: mi(2), wa, wab, s
-    real(wp) :: na1, na2, ta1, ta2, xa1, xa2, ya1, ya2, nb1, nb2, tb1, tb2, xb1, xb2, yb1, yb2
+    real(wp) :: na1, na2, ta1, ta2, xa1, xa2, ya1, ya2, nb1, nb2, tb1, tb2, xb1, xb2
     knn(:, 1:m) = 0.0_wp
     knt(:, 1:m) = 0.0_wp
     ktn(:, 1:m) = 0.0_wp
@@ -208,8 +215,6 @@ contains
           tb2 = tangent(2, jb)
           xb1 = nb1*mi(1)
           xb2 = nb2*mi(2)
-          yb1 = tb1*mi(1)
-          yb2 = tb2*mi(2)
           ! K(ja, jb)
           s = xa1*nb1
           s = s + xa2*nb2
@@ -223,20 +228,19 @@ contains
           s = ya1*tb1
           s = s + ya2*tb2
           ktt(d, ja) = ktt(d, ja) + wab*s
-          ! K(jb, ja), its own products
+          ! Knn(jb, ja), its own products
           s = xb1*na1
           s = s + xb2*na2
           knn(-d, jb) = knn(-d, jb) + wab*s
-          s = xb1*ta1
-          s = s + xb2*ta2
-          knt(-d, jb) = knt(-d, jb) + wab*s
-          s = yb1*na1
-          s = s + yb2*na2
-          ktn(-d, jb) = ktn(-d, jb) + wab*s
-          s = yb1*ta1
-          s = s + yb2*ta2
-          ktt(-d, jb) = ktt(-d, jb) + wab*s
         end do
+      end do
+    end do
+    ! The mirror of the tangential blocks: K(ja + d, ja) from K(ja, ja + d).
+    do ja = 1, m - 1
+      do d = 1, min(kbs, m - ja)
+        knt(-d, ja + d) = ktn(d, ja)
+        ktn(-d, ja + d) = knt(d, ja)
+        ktt(-d, ja + d) = ktt(d, ja)
       end do
     end do
   end subroutine pair_sums_friction

@@ -44,6 +44,7 @@ module raccord_solver_work
     integer, allocatable :: ncnt(:), ncol(:,:), tcnt(:), tcol(:,:)
     real(wp), allocatable :: nval(:,:), tval(:,:)
     real(wp), allocatable :: bc(:,:), bd(:,:), bx(:,:), be(:,:), bg(:)
+    real(wp), allocatable :: rowsc(:)    !< (2 m) row scales of the reduced friction matrix
     !> Use the saddle form only (tests compare the reduced forms with it).
     logical :: saddle_only = .false.
     !> &contact_pair tolerance: the relative residual of (19) within which

@@ -8,6 +8,7 @@
 !> entry from its definition, both orders of each pair (K(j, k) and
 !> K(k, j) are summed apart); the band width is that of the rows; Knn of
 !> a solve without friction is that of one with friction, bit for bit;
+!> the tangential blocks are each other's mirrors, bit for bit;
 !> a second set after the first (the per-node marks are reset) is right
 !> too; and G1_OO Z + G1_OA = 0 on every open run, Z nonzero only next to
 !> a run.
@@ -46,6 +47,11 @@ contains
       call delassus(cs, minv, alpha, h_ratio, h, .true., w)
       call check_blocks(failure, cs, minv, alpha, h_ratio, h, w, icase)
       if (allocated(failure)) return
+      ! the tangential blocks summed for one order of each pair and
+      ! mirrored (issue #16, sixth pass): exactly symmetric
+      call check(failure, tangential_mirrored(w, m), &
+        'Ktt(k, j) = Ktt(j, k) and Knt(k, j) = Ktn(j, k), bit for bit')
+      if (allocated(failure)) return
       ! without friction: Knn alone, the same sums
       call delassus(cs, minv, alpha, h_ratio, h, .false., w0)
       call check(failure, w0%kb == w%kb, 'the same band width without friction')
@@ -56,6 +62,23 @@ contains
       if (allocated(failure)) return
     end do
   end subroutine test_k
+
+  !> Whether the tangential blocks of w are the mirrors of each other:
+  !> ktt(-d, j + d) = ktt(d, j), knt(-d, j + d) = ktn(d, j) and
+  !> ktn(-d, j + d) = knt(d, j) over the band (k(d, j) = K(j, j + d)).
+  logical function tangential_mirrored(w, m) result(ok)
+    type(solver_work_t), intent(in) :: w
+    integer, intent(in) :: m
+    integer :: j, d
+    ok = .true.
+    do j = 1, m - 1
+      do d = 1, min(w%kb, m - j)
+        if (w%ktt(-d, j + d) /= w%ktt(d, j)) ok = .false.
+        if (w%knt(-d, j + d) /= w%ktn(d, j)) ok = .false.
+        if (w%ktn(-d, j + d) /= w%knt(d, j)) ok = .false.
+      end do
+    end do
+  end function tangential_mirrored
 
   !> The four blocks against their definition, entry by entry:
   !> K(j, k) = sum over the nodes p of both rows of w_jp w_kp a_j . (M_p^-1 b_k)
