@@ -113,7 +113,7 @@ contains
         end if
         if (key%subscripted .and. .not. any(ARRAY_KEYS == key%name)) then
           call raise_error(err, EXIT_INPUT, head(deck, blk, key%line, label) // ': key ''' // key%name // &
-            ''' (' // clipped(item_text(blk, k), MAX_ECHO) // '): a subscript applies only to the list keys (' // &
+            ''' (' // clipped(blk%item_text(k), MAX_ECHO) // '): a subscript applies only to the list keys (' // &
             join_names(ARRAY_KEYS) // '); ' // key%name // ' takes a single ' // &
             trim(merge('text  ', 'number', any(TEXT_KEYS == key%name))) // ': write ' // key%name // ' = ' // &
             trim(merge('''...''', '<x>  ', any(TEXT_KEYS == key%name))))
@@ -156,8 +156,8 @@ contains
       i = findloc(mine .and. theirs, .true., dim=1)
       call raise_error(err, EXIT_INPUT, head(deck, blk, blk%keys(k)%line, label) // ': key ''' // &
         blk%keys(k)%name // ''': entry ' // str(i) // ' is given twice (line ' // str(blk%keys(j)%line) // ': ' // &
-        clipped(item_text(blk, j), MAX_ECHO) // '; line ' // str(blk%keys(k)%line) // ': ' // &
-        clipped(item_text(blk, k), MAX_ECHO) // '); give each entry once')
+        clipped(blk%item_text(j), MAX_ECHO) // '; line ' // str(blk%keys(k)%line) // ': ' // &
+        clipped(blk%item_text(k), MAX_ECHO) // '); give each entry once')
       return
     end do
   end subroutine check_entries
@@ -176,19 +176,6 @@ contains
     read(record, nml=probe, iostat=ios)
     set = a /= UNSET .and. ios == 0
   end function entries_set
-
-  !> Item k as written, subscript included, without a trailing comma.
-  pure function item_text(blk, k) result(item)
-    type(deck_block_t), intent(in) :: blk
-    integer, intent(in) :: k
-    character(len=:), allocatable :: item
-    integer :: n
-    item = trim(adjustl(blk%text(blk%keys(k)%first:blk%keys(k)%last)))
-    n = len(item)
-    if (n > 0) then
-      if (item(n:n) == ',') item = trim(item(1:n-1))
-    end if
-  end function item_text
 
   !> A value list made only of null values written as repeat counts
   !> ("1*", "2*, 1*"); an empty list is reported by the scanner.

@@ -47,6 +47,7 @@ module raccord_deck_scan
     procedure :: find => block_find
     procedure :: item => block_item
     procedure :: value_text => block_value_text
+    procedure :: item_text => block_item_text
     procedure :: key_line => block_key_line
   end type deck_block_t
 
@@ -76,14 +77,28 @@ contains
     class(deck_block_t), intent(in) :: self
     integer, intent(in) :: k
     character(len=:), allocatable :: text
+    text = unlisted(self%text(self%keys(k)%value_first:self%keys(k)%last))
+  end function block_value_text
+
+  !> The k-th item as written, subscript included (for messages).
+  pure function block_item_text(self, k) result(text)
+    class(deck_block_t), intent(in) :: self
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    text = unlisted(self%text(self%keys(k)%first:self%keys(k)%last))
+  end function block_item_text
+
+  !> Text trimmed, without the separator that may end it (not part of it).
+  pure function unlisted(raw) result(text)
+    character(len=*), intent(in) :: raw
+    character(len=:), allocatable :: text
     integer :: n
-    text = trim(adjustl(self%text(self%keys(k)%value_first:self%keys(k)%last)))
-    ! A trailing separator is not part of the value.
+    text = trim(adjustl(raw))
     n = len(text)
     if (n > 0) then
       if (text(n:n) == ',') text = trim(text(1:n-1))
     end if
-  end function block_value_text
+  end function unlisted
 
   !> Line of the first key called name, or of the group when the key is absent
   !> (a missing required key is reported where its group starts).
@@ -271,11 +286,7 @@ contains
           quote = c
           call put(c, c)
         case ('/')
-          call append_segment(blocks(nblock), seg_text(1:ns), seg_mask(1:ns), lnum)
-          ns = 0
-          in_group = .false.
-          call close_block(blocks(nblock))
-          call find_keys(path, blocks(nblock), err)
+          call end_group()
           if (err%failed()) exit lines
         case ('&')
           ! '&end' closes a group as '/' does (an older namelist form,
@@ -289,11 +300,7 @@ contains
                 c = line(j:j)
               end if
               if (.not. is_name_char(c)) then
-                call append_segment(blocks(nblock), seg_text(1:ns), seg_mask(1:ns), lnum)
-                ns = 0
-                in_group = .false.
-                call close_block(blocks(nblock))
-                call find_keys(path, blocks(nblock), err)
+                call end_group()
                 if (err%failed()) exit lines
                 i = j
                 cycle chars
@@ -358,6 +365,16 @@ contains
       seg_text(ns:ns) = t
       seg_mask(ns:ns) = m
     end subroutine put
+
+    !> The group's closer ('/' or '&end'): the line's last segment into the
+    !> block, the block closed and its keys found (err set on a bad key).
+    subroutine end_group()
+      call append_segment(blocks(nblock), seg_text(1:ns), seg_mask(1:ns), lnum)
+      ns = 0
+      in_group = .false.
+      call close_block(blocks(nblock))
+      call find_keys(path, blocks(nblock), err)
+    end subroutine end_group
   end subroutine scan_deck
 
   !> Read one line of any length; at_end is set at the end of the file.
