@@ -37,6 +37,17 @@ except ImportError as exc:
     print('SKIP: %s (Debian: python3-h5py python3-meshio)' % exc)
     sys.exit(77)
 
+# Both scenes: mesh sizes graded from the contact point (points 3 and 15),
+# recombined quadrilaterals, the two bodies' physical surfaces.
+SIZING = '''
+Field[1] = Distance; Field[1].NodesList = {3, 15};
+Field[2] = Threshold; Field[2].InField = 1; Field[2].SizeMin = 2*hc; Field[2].SizeMax = 2*hf;
+Field[2].DistMin = %(dmin)g; Field[2].DistMax = %(dmax)g;
+Background Field = 2;
+Mesh.MeshSizeExtendFromBoundary = 0; Mesh.MeshSizeFromPoints = 0; Mesh.MeshSizeFromCurvature = 0;
+Mesh.RecombineAll = 1; Mesh.Algorithm = 6; Mesh.SubdivisionAlgorithm = 1;
+Physical Surface("cylinder") = {1}; Physical Surface("block") = {2};
+'''
 # Cylinder (lower half-disc, centre (0, R)) on a block [-W, W] x [-H, 0]; a
 # node at the first point of contact (0, 0) on both bodies, sizes growing
 # from hc there to hf away (Gmsh threshold field on the distance to it).
@@ -49,13 +60,7 @@ Point(11) = {-W, -H, 0, hf}; Point(12) = {W, -H, 0, hf}; Point(13) = {W, 0, 0, h
 Point(15) = {0, 0, 0, hc};
 Line(11) = {11, 12}; Line(12) = {12, 13}; Line(13) = {13, 15}; Line(14) = {15, 14}; Line(15) = {14, 11};
 Curve Loop(2) = {11, 12, 13, 14, 15}; Plane Surface(2) = {2};
-Field[1] = Distance; Field[1].NodesList = {3, 15};
-Field[2] = Threshold; Field[2].InField = 1; Field[2].SizeMin = 2*hc; Field[2].SizeMax = 2*hf;
-Field[2].DistMin = %(dmin)g; Field[2].DistMax = %(dmax)g;
-Background Field = 2;
-Mesh.MeshSizeExtendFromBoundary = 0; Mesh.MeshSizeFromPoints = 0; Mesh.MeshSizeFromCurvature = 0;
-Mesh.RecombineAll = 1; Mesh.Algorithm = 6; Mesh.SubdivisionAlgorithm = 1;
-Physical Surface("cylinder") = {1}; Physical Surface("block") = {2};
+''' + SIZING + '''
 Physical Curve("cyl_arc") = {1, 2}; Physical Curve("cyl_top") = {3};
 Physical Curve("block_top") = {13, 14}; Physical Curve("block_bottom") = {11};
 '''
@@ -68,13 +73,7 @@ Curve Loop(1) = {2, 3, 4}; Plane Surface(1) = {1};
 Point(11) = {0, -H, 0, hf}; Point(12) = {W, -H, 0, hf}; Point(13) = {W, 0, 0, hf}; Point(15) = {0, 0, 0, hc};
 Line(11) = {11, 12}; Line(12) = {12, 13}; Line(13) = {13, 15}; Line(15) = {15, 11};
 Curve Loop(2) = {11, 12, 13, 15}; Plane Surface(2) = {2};
-Field[1] = Distance; Field[1].NodesList = {3, 15};
-Field[2] = Threshold; Field[2].InField = 1; Field[2].SizeMin = 2*hc; Field[2].SizeMax = 2*hf;
-Field[2].DistMin = %(dmin)g; Field[2].DistMax = %(dmax)g;
-Background Field = 2;
-Mesh.MeshSizeExtendFromBoundary = 0; Mesh.MeshSizeFromPoints = 0; Mesh.MeshSizeFromCurvature = 0;
-Mesh.RecombineAll = 1; Mesh.Algorithm = 6; Mesh.SubdivisionAlgorithm = 1;
-Physical Surface("cylinder") = {1}; Physical Surface("block") = {2};
+''' + SIZING + '''
 Physical Curve("cyl_arc") = {2}; Physical Curve("cyl_top") = {3}; Physical Curve("cyl_axis") = {4};
 Physical Curve("block_top") = {13}; Physical Curve("block_bottom") = {11}; Physical Curve("block_axis") = {15};
 '''
