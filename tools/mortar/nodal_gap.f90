@@ -17,6 +17,11 @@
 !>   st       0 open, 1 stick, 2 slip
 !>   G1       the row's band of the conditions' matrix, G1(j-1, j),
 !>            G1(j, j), G1(j+1, j) (constraint numbering)
+!>   tgt      active rows (frictionless): the weighted gap (19) holds the
+!>            row at, sum_o X(o, j) gw+_o with X = G1_OO^-1 G1_OA over the
+!>            open rows O and the active A (the solve's N' g_w = 0,
+!>            N = [I; -X]: raccord_frictionless_form); gw+ - tgt is 0 to
+!>            round-off when the rows are those of the step. Open rows: 0
 !> (rows of an open master's end corners have node numbers above the
 !> slave's node count) and then each slave node within r < 0.75 with
 !> its pointwise gap at x(n+1) to the nearest master node in x, a measure
@@ -37,9 +42,9 @@ program nodal_gap
   type(contact_energy_watch_t) :: watch
   character(len=512) :: path, arg
   real(wp) :: wc_prev, dwc, tmin, tmax, thr, x(2), xm(2), gpt, dmin
-  real(wp), allocatable :: a(:,:), gm(:), gp(:), f(:), b(:,:), g0(:)
-  integer, allocatable :: ipiv(:)
-  integer :: j, e, p, i, d, m, info, k, kk, q
+  real(wp), allocatable :: a(:,:), gm(:), gp(:), f(:), b(:,:), g0(:), xz(:,:), aoo(:,:), tgt(:)
+  integer, allocatable :: ipiv(:), io(:), iac(:)
+  integer :: j, e, p, i, d, m, info, k, kk, q, no, na
   if (command_argument_count() < 3) stop 'usage: nodal_gap ./deck.nml t_min t_max [threshold]'
   call get_command_argument(1, path)
   call get_command_argument(2, arg)
@@ -68,8 +73,8 @@ program nodal_gap
         write(*, '(a,i7,a,es14.6,a,es12.4,a,es12.4,a,es12.4,a,i4)') 'step ', run%state%step, ' t ', &
           run%state%time, ' dWc ', dwc, ' given ', contact_energy_given(run%state, watch), ' scale ', &
           run%state%energy%scale, ' m ', m
-        if (allocated(a)) deallocate(a, gm, gp, f, b, ipiv, g0)
-        allocate(a(m, m), gm(m), gp(m), f(m), b(m, 3), ipiv(m), g0(m))
+        if (allocated(a)) deallocate(a, gm, gp, f, b, ipiv, g0, tgt, io, iac)
+        allocate(a(m, m), gm(m), gp(m), f(m), b(m, 3), ipiv(m), g0(m), tgt(m), io(m), iac(m))
         ! The conditions' matrix, dense: a(i, j) = G1(i, j) = g1(i - j, j).
         a = 0.0_wp
         do j = 1, m
@@ -94,6 +99,30 @@ program nodal_gap
         end do
         g0 = cs%gap_w(1:m)
         f = matmul(a, pr%work%lam(1:m))
+        ! What the active rows are held at: X = G1_OO^-1 G1_OA, tgt_A = X' gw+_O.
+        no = 0
+        na = 0
+        do j = 1, m
+          if (pr%st_c(j) == 0) then
+            no = no + 1
+            io(no) = j
+          else
+            na = na + 1
+            iac(na) = j
+          end if
+        end do
+        tgt = 0.0_wp
+        if (no > 0 .and. na > 0) then
+          allocate(aoo(no, no), xz(no, na))
+          aoo = a(io(1:no), io(1:no))
+          xz = a(io(1:no), iac(1:na))
+          call dgesv(no, na, aoo, no, ipiv, xz, no, info)
+          if (info /= 0) write(*, '(a,i0)') '  (G1_OO singular, dgesv info ', info, ')'
+          do k = 1, na
+            tgt(iac(k)) = dot_product(xz(:, k), gp(io(1:no)))
+          end do
+          deallocate(aoo, xz)
+        end if
         ! Nodal gaps: G1^T gn = g_w for the three weighted gaps at once.
         b(:, 1) = g0
         b(:, 2) = gm
@@ -105,10 +134,11 @@ program nodal_gap
           i = cs%snode(j)
           x = 0.0_wp
           if (i <= pr%slave%nnode) x = run%model%x(:, pr%slave%node(i)) + run%state%u(:, pr%slave%node(i))
-          write(*, '(a,i3,a,i3,a,f8.5,10(a,es10.2),a,i2,a,3es10.2)') '  j', j, ' nd', i, ' r', x(1), &
+          write(*, '(a,i3,a,i3,a,f8.5,10(a,es10.2),a,i2,a,3es10.2,a,es10.2)') '  j', j, ' nd', i, ' r', x(1), &
             ' lam', pr%work%lam(j), ' F~', f(j), ' len', cs%length(j), ' gw*', g0(j), ' gn*', b(j, 1), &
             ' gw-', gm(j), ' gw+', gp(j), ' gn-', b(j, 2), ' gn+', b(j, 3), &
-            ' W', -pr%work%lam(j)*(gp(j) - gm(j))/2.0_wp, ' st', pr%st_c(j), ' G1', cs%g1(-1:1, j)
+            ' W', -pr%work%lam(j)*(gp(j) - gm(j))/2.0_wp, ' st', pr%st_c(j), ' G1', cs%g1(-1:1, j), &
+            ' tgt', tgt(j)
         end do
         do i = 1, pr%slave%nnode
           k = pr%slave%node(i)
