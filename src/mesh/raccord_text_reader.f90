@@ -7,6 +7,7 @@ module raccord_text_reader
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
+  use raccord_files, only: broken_link, relative_note
   implicit none
   private
 
@@ -36,9 +37,16 @@ contains
     character(len=512) :: msg
     logical :: exists, busy, folder
     integer(i8) :: nbytes
+    character(len=:), allocatable :: target
     tf%path = path
     tf%line_no = 0
     inquire(file=path, exist=exists)
+    if (.not. exists .and. broken_link(path, target)) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is a broken symbolic link: it points to "' // &
+        target // '"' // relative_note(target) // ', which does not exist (or is a loop of links): ' // &
+        'mend the link or give the mesh file''s own path')
+      return
+    end if
     if (.not. exists) then
       call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" does not exist: check the path ' // &
         '(relative paths are taken from the scene deck''s folder)')
