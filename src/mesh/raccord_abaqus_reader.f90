@@ -214,6 +214,15 @@ contains
         '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
       return
     end if
+    ! Their closers: with *Part, *Instance and *Assembly refused above, an
+    ! *End Part here closes nothing (a file cut out of a CAE export, its
+    ! parts' nodes maybe lost with the cut); it was read past without a word.
+    if (kw == 'endpart' .or. kw == 'endinstance' .or. kw == 'endassembly') then
+      call raise_error(err, EXIT_INPUT, at // ': *' // clip(trim(adjustl(sl%text(2:l(1))))) // ' closes a *' // &
+        clip(trim(adjustl(sl%text(index(lower(sl%text(1:l(1))), 'd') + 1:l(1))))) // ' that the file does ' // &
+        'not open: remove the line (and check that no nodes or elements were lost where the file was cut)')
+      return
+    end if
     ! (a loop: gfortran's findloc missed a shorter character scalar)
     do k = 1, size(GEOMETRY_KEYWORDS)
       if (kw /= trim(GEOMETRY_KEYWORDS(k))) cycle
