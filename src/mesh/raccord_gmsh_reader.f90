@@ -11,6 +11,9 @@
 !> several groups is written once per group under a new id, so a repeat
 !> of an element (same nodes in the same order) is merged back into one.
 !> Sections raccord does not use ($Periodic, $NodeData, ...) are skipped.
+!> This module is the loop over the sections; the sections are read by
+!> raccord_gmsh_header (both versions), raccord_gmsh_v41 and
+!> raccord_gmsh_v22, on raccord_gmsh_state and raccord_gmsh_lines.
 module raccord_gmsh_reader
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
