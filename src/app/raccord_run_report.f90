@@ -44,6 +44,7 @@ contains
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
     integer :: ib, k, nq4, nq8
+    integer(i8) :: every
     real(wp) :: c, setup, base, contact_mean
     type(step_cost_t) :: cost
     character(len=:), allocatable :: range, reach
@@ -124,8 +125,13 @@ contains
     ! with every slave node the prescribed motion can reach in contact
     ! (raccord_step_trial); the estimate takes their mean, the range both.
     contact_mean = 0.5_wp*(cost%contact + cost%contact_engaged)
-    associate (n => real(plan%nsteps, wp), frames => real(scene%output%frames + 1, wp))
-      base = setup + cost%element*n + cost%frame*frames
+    ! History rows as raccord_output writes them: every history_every
+    ! steps (0: about 1000 rows) and at the first and last step.
+    every = int(scene%output%history_every, i8)
+    if (every <= 0) every = max(1_i8, plan%nsteps/1000_i8)
+    associate (n => real(plan%nsteps, wp), frames => real(scene%output%frames + 1, wp), &
+        rows => real(plan%nsteps/every + 2_i8, wp))
+      base = setup + cost%element*n + cost%frame*frames + cost%history*rows
       call log_raw('cost    about ' // str(1.0e9_wp*cost%element/real(max(1, model%nelem), wp), 3) // &
         ' ns per element per step, timed here over ' // str(cost%steps) // ' trial steps (' // &
         trim(merge('wall     ', 'processor', model%nthreads > 1)) // ' time)')
@@ -141,7 +147,8 @@ contains
       end if
       call log_raw('cost    estimated run time ' // str(base + contact_mean*n, 3) // ' s (setup ' // &
         str(setup, 3) // ' s, elements ' // str(cost%element*n, 3) // ' s, contact ' // &
-        str(contact_mean*n, 3) // ' s, output ' // str(cost%frame*frames, 3) // ' s)' // range)
+        str(contact_mean*n, 3) // ' s, history ' // str(cost%history*rows, 3) // ' s, output ' // &
+        str(cost%frame*frames, 3) // ' s)' // range)
     end associate
   end subroutine report_plan
 

@@ -15,7 +15,7 @@ module raccord_files
   private
 
   public :: rename_file, make_directory, file_exists, delete_file, file_size, truncate_file
-  public :: write_failure_reason, crc_of_file
+  public :: write_failure_reason, crc_of_file, broken_link, relative_note
 
   !> access(2) mode "does the file exist".
   integer(c_int), parameter :: F_OK = 0_c_int
@@ -47,6 +47,15 @@ module raccord_files
       integer(c_int), value :: mode
       integer(c_int) :: rc
     end function c_access
+
+    ! ssize_t is a 64-bit long on the 64-bit Linux targets raccord builds for.
+    function c_readlink(path, buf, size) bind(C, name='readlink') result(n)
+      import :: c_char, c_size_t, c_long
+      character(kind=c_char), intent(in) :: path(*)
+      character(kind=c_char), intent(out) :: buf(*)
+      integer(c_size_t), value :: size
+      integer(c_long) :: n
+    end function c_readlink
 
     function c_unlink(path) bind(C, name='unlink') result(rc)
       import :: c_int, c_char
@@ -146,6 +155,44 @@ contains
     character(len=*), intent(in) :: path
     file_exists = c_access(c_path(path), F_OK) == 0
   end function file_exists
+
+  !> A symbolic link that leads nowhere: true, with the link's target as
+  !> the link holds it (readlink(2); a relative target is relative to the
+  !> link's folder), when nothing exists at `path` once the links are
+  !> followed (the target is missing, or the links form a loop) but
+  !> `path` itself is a link. False for a file, a folder, a link that
+  !> resolves and a path where nothing is at all. Lets a message say
+  !> "broken link to X" where "does not exist" would send the user to
+  !> look for a file that is plainly there in `ls`.
+  logical function broken_link(path, target)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable, intent(out) :: target
+    integer, parameter :: MAX_TARGET = 4096
+    character(kind=c_char) :: buf(MAX_TARGET)
+    integer(c_long) :: n
+    integer :: k
+    broken_link = .false.
+    target = ''
+    if (file_exists(path)) return
+    n = c_readlink(c_path(path), buf, int(MAX_TARGET, c_size_t))
+    if (n < 0) return
+    target = repeat(' ', int(n))
+    do k = 1, int(n)
+      target(k:k) = buf(k)
+    end do
+    broken_link = .true.
+  end function broken_link
+
+  !> " (relative to the link's folder)" for a link target that is not an
+  !> absolute path, '' for one that is: where a message quotes a target.
+  pure function relative_note(target) result(s)
+    character(len=*), intent(in) :: target
+    character(len=:), allocatable :: s
+    s = ' (relative to the link''s folder)'
+    if (len(target) > 0) then
+      if (target(1:1) == '/') s = ''
+    end if
+  end function relative_note
 
   !> Delete a file; nothing happens (and no error) if it does not exist,
   !> because callers use it to clear stale outputs.

@@ -21,6 +21,7 @@ module raccord_history_file
 
   public :: history_open, history_write, history_close, incomplete_name
   public :: history_bytes, history_suspend, history_resume
+  public :: ROW_FORMAT
 
   !> Width of one column: es24.16e3 (17 significant digits, enough to
   !> read back the same real64) plus a separating blank.

@@ -23,7 +23,7 @@ module raccord_abaqus_reader
   use raccord_mesh, only: ELEM_Q4, ELEM_Q8, label_key, unquoted_key
   use raccord_int_map, only: int_map_t
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, &
-    split_fields, parse_int, parse_real, int_fault
+    split_fields, parse_int, parse_real, int_fault, beyond_int_range
   use raccord_mesh_draft, only: mesh_draft_t, draft_group_t, add_file, add_node, add_element, find_group, &
     add_group, add_member, add_draft_surface, find_draft_surface, add_edge_by_side
   implicit none
@@ -212,6 +212,15 @@ contains
       call raise_error(err, EXIT_INPUT, at // ': *' // clip(sl%text(2:l(1))) // ': parts, instances and ' // &
         'assemblies are not read (instance transformations would be lost): write a flat input file ' // &
         '(Abaqus/CAE: Model > Edit Attributes > Do not use parts and assemblies in input files)')
+      return
+    end if
+    ! Their closers: with *Part, *Instance and *Assembly refused above, an
+    ! *End Part here closes nothing (a file cut out of a CAE export, its
+    ! parts' nodes maybe lost with the cut); it was read past without a word.
+    if (kw == 'endpart' .or. kw == 'endinstance' .or. kw == 'endassembly') then
+      call raise_error(err, EXIT_INPUT, at // ': *' // clip(trim(adjustl(sl%text(2:l(1))))) // ' closes a *' // &
+        clip(trim(adjustl(sl%text(index(lower(sl%text(1:l(1))), 'd') + 1:l(1))))) // ' that the file does ' // &
+        'not open: remove the line (and check that no nodes or elements were lost where the file was cut)')
       return
     end if
     ! (a loop: gfortran's findloc missed a shorter character scalar)
@@ -496,6 +505,14 @@ contains
     integer, allocatable :: ids(:)
     logical :: ok
     call parse_int(entry, id, ok)
+    ! Digits that do not fit an integer are an id (a set's label starts
+    ! with a letter), not a set name: said so, as for the ids of *NODE and
+    ! *ELEMENT, where "neither a node id nor a node set" was the message.
+    if (.not. ok .and. beyond_int_range(entry)) then
+      call raise_error(err, EXIT_INPUT, loc_text(d, sl) // ': the id ' // shown(entry) // ' in ' // st%keyword // &
+        ' is ' // int_fault(entry) // ': check the entry, or renumber the mesh with ids below 2^31')
+      return
+    end if
     if (st%block == BLK_NSET) then
       if (ok) then
         call add_member(d%nsets(st%set), id, sl%ifile, sl%line)

@@ -7,11 +7,12 @@ module raccord_text_reader
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
+  use raccord_files, only: broken_link, relative_note
   implicit none
   private
 
   public :: open_text_file, close_text_file, read_line, here, check_count
-  public :: split_fields, parse_int, parse_real, int_fault
+  public :: split_fields, parse_int, parse_real, int_fault, beyond_int_range
 
   !> Longest line read (Gmsh and Abaqus lines are far shorter).
   integer, parameter :: MAX_LINE = 1000000
@@ -36,9 +37,16 @@ contains
     character(len=512) :: msg
     logical :: exists, busy, folder
     integer(i8) :: nbytes
+    character(len=:), allocatable :: target
     tf%path = path
     tf%line_no = 0
     inquire(file=path, exist=exists)
+    if (.not. exists .and. broken_link(path, target)) then
+      call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" is a broken symbolic link: it points to "' // &
+        target // '"' // relative_note(target) // ', which does not exist (or is a loop of links): ' // &
+        'mend the link or give the mesh file''s own path')
+      return
+    end if
     if (.not. exists) then
       call raise_error(err, EXIT_INPUT, 'mesh file "' // path // '" does not exist: check the path ' // &
         '(relative paths are taken from the scene deck''s folder)')
@@ -277,16 +285,27 @@ contains
   pure function int_fault(text) result(s)
     character(len=*), intent(in) :: text
     character(len=:), allocatable :: s
-    integer :: first
     s = 'not an integer'
+    if (beyond_int_range(text)) s = 'beyond the integer range of raccord''s ids and counts (-2147483648 to 2147483647)'
+  end function int_fault
+
+  !> An integer's text (optional sign, then digits only) that parse_int
+  !> refused: its value does not fit the default integer (2^31 or more).
+  pure logical function beyond_int_range(text)
+    character(len=*), intent(in) :: text
+    integer :: first, value, ios
+    beyond_int_range = .false.
     first = 1
     if (len(text) > 0) then
       if (text(1:1) == '-' .or. text(1:1) == '+') first = 2
     end if
     if (first > len(text)) return
     if (verify(text(first:), '0123456789') /= 0) return
-    s = 'beyond the integer range of raccord''s ids and counts (-2147483648 to 2147483647)'
-  end function int_fault
+    ! digits that fit are an integer, not a fault
+    if (len(text) - first + 1 <= 9) return
+    read(text, *, iostat=ios) value
+    beyond_int_range = ios /= 0 .or. len(text) - first + 1 > 10
+  end function beyond_int_range
 
   !> Parse a real field: digits, sign, point and exponent letters only, then
   !> a finite value.

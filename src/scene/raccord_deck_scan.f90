@@ -17,6 +17,7 @@ module raccord_deck_scan
   use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str, lower
+  use raccord_files, only: broken_link, relative_note
   implicit none
   private
 
@@ -133,7 +134,7 @@ contains
     character(len=*), intent(in) :: known_groups(:)
     type(deck_block_t), allocatable, intent(out) :: blocks(:)
     type(error_t), intent(inout) :: err
-    character(len=:), allocatable :: line, seg_text, seg_mask, name, hint
+    character(len=:), allocatable :: line, seg_text, seg_mask, name, hint, target
     character(len=256) :: msg
     character(len=1) :: c, quote
     integer :: u, ios, lnum, i, j, nblock, ns
@@ -155,6 +156,12 @@ contains
     ! device (/dev/zero) read without end: both have size 0, as an empty
     ! deck has, and are refused before they are opened.
     inquire(file=path, exist=exists, size=nbytes)
+    if (.not. exists .and. broken_link(path, target)) then
+      call raise_error(err, EXIT_INPUT, path // ': the scene deck is a broken symbolic link: it points to "' // &
+        target // '"' // relative_note(target) // ', which does not exist (or is a loop of links); ' // &
+        'mend the link or give the deck''s own path')
+      return
+    end if
     if (exists .and. nbytes == 0) then
       call raise_error(err, EXIT_INPUT, path // ': the scene deck is empty (0 bytes), or is a pipe or device, ' // &
         'which raccord does not read; give the deck file (doc/scene-reference.md)')

@@ -359,6 +359,33 @@ plot_history)
   expect_code 2
   ;;
 
+check_history)
+  # The cost line counts the history rows (raccord_step_trial
+  # time_history_row): on the coarse bar over 3e-3 s (3400 steps),
+  # written every step, the history share of the
+  # estimate is the rows' ratio (steps + 2 against steps/100 + 2) times
+  # that of history_every = 100, within a factor 3 (two separate timings
+  # of a row). Before, the estimate had no history share at all, and a
+  # scene writing 10^6 rows ran ten times its estimate.
+  cp "$data/bar_coarse.nml" "$data/bar_coarse.msh" "$work/"
+  for every in 1 100; do
+    sed -e "s/history_every = 1\$/history_every = $every/" -e "s/t_end = 3.0e-5/t_end = 3.0e-3/" \
+      "$work/bar_coarse.nml" > "$work/bar_$every.nml"
+    run --check "bar_$every.nml"
+    expect_code 0
+    awk '/^cost    estimated/ { for (i = 1; i < NF; i++) if ($i == "history") print $(i+1) }' "$work/stdout.txt" \
+      > "$work/history_$every.txt"
+    awk '/^time / { for (i = 1; i < NF; i++) if ($(i+1) == "steps") print $i }' "$work/stdout.txt" > "$work/steps.txt"
+  done
+  h1=$(cat "$work/history_1.txt"); h100=$(cat "$work/history_100.txt"); n=$(cat "$work/steps.txt")
+  if awk -v a="${h1:-0}" -v b="${h100:-0}" -v n="${n:-0}" 'BEGIN {
+      r = (n + 2)/(int(n/100) + 2); q = (b > 0) ? a/b : 0
+      printf "history %s s (every step), %s s (every 100), %d steps: ratio %.3g, rows %.3g\n", a, b, n, q, r
+      exit !(n > 1000 && a > 0 && b > 0 && q > r/3 && q < 3*r) }'; then
+    pass "the history share scales with the rows: $h1 s and $h100 s over $n steps"
+  else fail "history share '$h1' s (every step), '$h100' s (every 100), $n steps: $(grep '^cost    estimated' "$work/stdout.txt")"; fi
+  ;;
+
 check_contact)
   # --check on a contact deck (EXTRA): the plan names the matching and the
   # multiplier space without padding, and the cost line times the contact

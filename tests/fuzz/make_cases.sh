@@ -54,7 +54,8 @@
 #   make_cases_names.sh (names, bounds), make_cases_files.sh (special,
 #   longtext, manysets, inpgeom, ...), make_cases_deck.sh
 #   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval) and
-#   make_cases_tags.sh (ids, entities, slowtext).
+#   make_cases_tags.sh (ids, entities, slowtext) and make_cases_rules.sh
+#   (thickness, brokenlink, setrange, endpart).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -822,5 +823,9 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # Ids and Gmsh 4.1 entities a mesh refers to, and inputs whose reading time
 # grew with the square of their size, described there.
 . "$(dirname "$0")/make_cases_tags.sh"
+# Input rules a user could trip over without a word (contact pairs of two
+# thicknesses, broken links, set ids beyond 2^31, a lone *End Part),
+# described there.
+. "$(dirname "$0")/make_cases_rules.sh"
 
 echo "make_cases: $ncase cases in $cases"
