@@ -244,7 +244,7 @@ contains
     type(verlet_t), intent(inout) :: v
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, nen, l, t, tn, lprev
+    integer :: k, a, c, nen, l, t, tn, cprev
     real(wp) :: xs(2, 3), nn(2, 3), xi1, xi2, tsgn
 
     w%multiplier = multiplier
@@ -286,7 +286,7 @@ contains
       ! ends lies on (root_along_field's test, once per segment: corner_xi
       ! decides those corners without the call).
       tsgn = sign(1.0_wp, (xs(1, 2) - xs(1, 1))*(nn(2, 1) + nn(2, 2)) - (xs(2, 2) - xs(2, 1))*(nn(1, 1) + nn(1, 2)))
-      lprev = 0
+      cprev = 0
       do t = w%cbeg(tn), w%cend(tn)
         l = w%cbuf(t)
         ! Segmentation (method brief section 5): the master ends seen from
@@ -294,13 +294,14 @@ contains
         ! slave segment. The list is ascending: a candidate that follows
         ! its chain neighbour starts at the corner that one ended at (the
         ! value corner_xi would return from its cache, without the call).
-        if (lprev > 0 .and. w%mcorner(1, l) == w%mcorner(2, lprev)) then
+        ! (cprev: the last candidate's end corner, 0 before the first.)
+        if (w%mcorner(1, l) == cprev) then
           xi1 = xi2
         else
           xi1 = corner_xi(w%mcorner(1, l))
         end if
         xi2 = corner_xi(w%mcorner(2, l))
-        lprev = l
+        cprev = w%mcorner(2, l)
         ! Most candidates lie past one end of the slave segment (both
         ! corners clipped to it): an empty overlap, tested here without
         ! the call (integrate_overlap's first test, the same expression).
