@@ -133,7 +133,12 @@ module raccord_mortar
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
     real(wp), allocatable :: ment_v(:,:)                !< (2, :) int N_a psi_j nu dGamma (dirs only)
-    integer, allocatable :: cand(:)           !< candidates of the current slave segment
+    ! The step's near slave segments with candidates (build_mortar), their
+    ! candidates in cbuf(cbeg(t):cend(t)), and the segments whose nodal
+    ! normals are taken.
+    integer :: nact = 0, nnrm = 0
+    integer, allocatable :: act(:), cbeg(:), cend(:), nrmseg(:)   !< (nseg)
+    integer, allocatable :: cbuf(:)           !< (size of the Verlet lists)
     ! Projections of the master corner nodes on the current slave segment,
     ! shared by the two master segments that meet at a corner, and F at the
     ! slave nodes, shared by the two slave segments that meet at a node.
@@ -186,7 +191,8 @@ contains
     allocate(w%mnu(2, master%nseg), source=0.0_wp)
     allocate(w%slist(ns))
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
-    allocate(w%cand(max(16, master%nseg)))
+    allocate(w%act(ns), w%cbeg(ns), w%cend(ns), w%nrmseg(ns))
+    allocate(w%cbuf(max(16, 4*ns)))
     ! Corner c of the master chain is master%corner(c); segment l runs from
     ! corner l to corner l+1 (corner 1 again at the end of a closed loop).
     nc = size(master%corner)
@@ -238,8 +244,8 @@ contains
     type(verlet_t), intent(inout) :: v
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, nen, ncand, l, t, tn
-    real(wp) :: xs(2, 3), nn(2, 3), lo(2), hi(2), xi1, xi2, tm(2), tsgn
+    integer :: k, a, c, nen, l, t, tn, cprev
+    real(wp) :: xs(2, 3), nn(2, 3), xi1, xi2, tsgn
 
     w%multiplier = multiplier
     nen = slave%nen_seg
@@ -263,61 +269,49 @@ contains
       w%mbeg = 1
       w%mend = 0
     end if
-    call slave_normals(slave, x, v, w)
-    do t = 1, v%nmnear
-      l = v%mnear(t)
-      ! (Element by element: a vector subscript on the left made gfortran
-      ! allocate a temporary here, twice per listed segment and step.)
-      w%xi_seg(w%mcorner(1, l)) = 0
-      w%xi_seg(w%mcorner(2, l)) = 0
-      w%f_seg(w%mcorner(1, l)) = 0
-      w%f_seg(w%mcorner(2, l)) = 0
-    end do
-    ! The inward unit normal of each listed straight master segment (its
-    ! tangent x_m' = -x_1/2 + x_2/2 turned anticlockwise), once per step
-    ! instead of once per overlap (integrate_overlap_line).
-    if (master%nen_seg == 2) then
-      do t = 1, v%nmnear
-        l = v%mnear(t)
-        tm = x(:, master%seg(1, l))*(-0.5_wp) + x(:, master%seg(2, l))*0.5_wp
-        w%mnu(:, l) = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
-      end do
-    end if
+    call prepare_step(slave, master, x, v, w)
+    ! Pass 2: the overlaps of the active segments with their candidates.
     w%nment = 0
-    slave_segments: do tn = 1, v%nnear
-      k = v%near(tn)
+    slave_segments: do tn = 1, w%nact
+      k = w%act(tn)
       call load_segment(slave, x, k, xs)
       nn = 0.0_wp
       do a = 1, nen
         nn(:, a) = w%nrm(:, w%pos(a, k))
       end do
-      call clear_segment(w, k)
       ! Dual basis: biorthogonal over this whole edge (raccord_mortar_dual).
       if (multiplier == MULT_DUAL) call dual_coefficients(nen, xs, slave%axisymmetric, w%adual)
-      lo = xs(:, 1)
-      hi = xs(:, 1)
-      do a = 2, nen
-        lo = min(lo, xs(:, a))
-        hi = max(hi, xs(:, a))
-      end do
-      ! Candidates: the listed master segments whose inflated box meets
-      ! the slave segment's box now (the test of the full search).
-      call verlet_candidates(v, k, lo, hi, w%cand, ncand)
       w%mbeg(k) = w%nment + 1
       ! The side of the segment's normal lines a corner past both its
       ! ends lies on (root_along_field's test, once per segment: corner_xi
       ! decides those corners without the call).
-      if (ncand > 0) then
-        tsgn = sign(1.0_wp, (xs(1, 2) - xs(1, 1))*(nn(2, 1) + nn(2, 2)) - (xs(2, 2) - xs(2, 1))*(nn(1, 1) + nn(1, 2)))
-      end if
-      do t = 1, ncand
-        l = w%cand(t)
+      tsgn = sign(1.0_wp, (xs(1, 2) - xs(1, 1))*(nn(2, 1) + nn(2, 2)) - (xs(2, 2) - xs(2, 1))*(nn(1, 1) + nn(1, 2)))
+      cprev = 0
+      do t = w%cbeg(tn), w%cend(tn)
+        l = w%cbuf(t)
         ! Segmentation (method brief section 5): the master ends seen from
         ! the slave along its normal field, each corner projected once per
-        ! slave segment.
-        xi1 = corner_xi(w%mcorner(1, l))
+        ! slave segment. The list is ascending: a candidate that follows
+        ! its chain neighbour starts at the corner that one ended at (the
+        ! value corner_xi would return from its cache, without the call).
+        ! (cprev: the last candidate's end corner, 0 before the first.)
+        if (w%mcorner(1, l) == cprev) then
+          xi1 = xi2
+        else
+          xi1 = corner_xi(w%mcorner(1, l))
+        end if
         xi2 = corner_xi(w%mcorner(2, l))
-        call integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, open_reach, w)
+        cprev = w%mcorner(2, l)
+        ! Most candidates lie past one end of the slave segment (both
+        ! corners clipped to it): an empty overlap, tested here without
+        ! the call (integrate_overlap's first test, the same expression).
+        if (max(xi1, xi2) - min(xi1, xi2) <= XI_SLIVER) cycle
+        if (nen == 2 .and. master%nen_seg == 2) then
+          call integrate_overlap_line(slave%axisymmetric, master, x, k, l, xs, nn, min(xi1, xi2), max(xi1, xi2), &
+            reach, open_reach, w)
+        else
+          call integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, open_reach, w)
+        end if
       end do
       w%mend(k) = w%nment
     end do slave_segments
@@ -390,6 +384,85 @@ contains
       w%xi_val(c) = xi
     end function corner_xi
   end subroutine build_mortar
+
+  !> The step's work before the overlaps (build_mortar): the candidates of
+  !> every near slave segment, the active segments, their nodal normals,
+  !> the corner caches cleared and the listed master segments' normals.
+  subroutine prepare_step(slave, master, x, v, w)
+    type(contact_surface_t), intent(in) :: slave, master
+    real(wp), intent(in) :: x(:,:)
+    type(verlet_t), intent(in) :: v
+    type(mortar_work_t), intent(inout) :: w
+    integer :: k, a, nen, ncand, l, t, tn, nc
+    real(wp) :: lo(2), hi(2), tm(2)
+    nen = slave%nen_seg
+    ! Pass 1: the candidates of every near segment (the current boxes),
+    ! kept in w%cbuf; the segments with candidates ("active") are the only
+    ! ones whose overlaps are integrated. About a third of the near
+    ! segments have none in a step (the lists hold the segments within
+    ! the skin too): for them only the filter and the cleared integrals.
+    ! Their nodal normals are taken only where a later pass reads them:
+    ! the active segments' nodes, and those of the segments find_corner_rows
+    ! looks at (a list that starts with the master's first segment or ends
+    ! with its last, open masters).
+    if (size(w%cbuf) < size(v%item)) then
+      deallocate(w%cbuf)
+      allocate(w%cbuf(size(v%item)))
+    end if
+    w%nact = 0
+    w%nnrm = 0
+    nc = 0
+    do tn = 1, v%nnear
+      k = v%near(tn)
+      call clear_segment(w, k)
+      w%mbeg(k) = 1
+      w%mend(k) = 0
+      ! The box of the segment's nodes (load_segment's values).
+      lo = x(:, slave%seg(1, k))
+      hi = lo
+      do a = 2, nen
+        lo = min(lo, x(:, slave%seg(a, k)))
+        hi = max(hi, x(:, slave%seg(a, k)))
+      end do
+      ! Candidates: the listed master segments whose inflated box meets
+      ! the slave segment's box now (the test of the full search).
+      call verlet_candidates(v, k, lo, hi, w%cbuf(nc + 1:), ncand)
+      if (ncand > 0) then
+        w%nact = w%nact + 1
+        w%act(w%nact) = k
+        w%cbeg(w%nact) = nc + 1
+        w%cend(w%nact) = nc + ncand
+        nc = nc + ncand
+        w%nnrm = w%nnrm + 1
+        w%nrmseg(w%nnrm) = k
+      else if (.not. master%closed) then
+        if (v%item(v%ptr(k)) == 1 .or. v%item(v%ptr(k + 1) - 1) == master%nseg) then
+          w%nnrm = w%nnrm + 1
+          w%nrmseg(w%nnrm) = k
+        end if
+      end if
+    end do
+    call slave_normals(slave, x, w%nrmseg(1:w%nnrm), w)
+    do t = 1, v%nmnear
+      l = v%mnear(t)
+      ! (Element by element: a vector subscript on the left made gfortran
+      ! allocate a temporary here, twice per listed segment and step.)
+      w%xi_seg(w%mcorner(1, l)) = 0
+      w%xi_seg(w%mcorner(2, l)) = 0
+      w%f_seg(w%mcorner(1, l)) = 0
+      w%f_seg(w%mcorner(2, l)) = 0
+    end do
+    ! The inward unit normal of each listed straight master segment (its
+    ! tangent x_m' = -x_1/2 + x_2/2 turned anticlockwise), once per step
+    ! instead of once per overlap (integrate_overlap_line).
+    if (master%nen_seg == 2) then
+      do t = 1, v%nmnear
+        l = v%mnear(t)
+        tm = x(:, master%seg(1, l))*(-0.5_wp) + x(:, master%seg(2, l))*0.5_wp
+        w%mnu(:, l) = [-tm(2), tm(1)]/max(sqrt(tm(1)**2 + tm(2)**2), tiny(1.0_wp))
+      end do
+    end if
+  end subroutine prepare_step
 
   !> Constraint rows in chain order from the per-segment integrals. A
   !> chain node is a constraint when its multiplier meets the overlap
@@ -516,6 +589,14 @@ contains
             end if
           end do
           ! Master entries +G21(a, j).
+          if (.not. w%dirs) then
+            ! The same merge in a routine of plain arrays (in the loop below
+            ! every entry reloaded the components' descriptors).
+            if (nr + (w%mend(k) - w%mbeg(k) + 1) > size(w%rnode)) call grow_row(w)
+            call merge_master_entries(w%ment_loc(w%mbeg(k):w%mend(k)), w%ment_node(w%mbeg(k):w%mend(k)), &
+              w%ment_w(w%mbeg(k):w%mend(k)), b, w%slot, w%rnode, w%rw, nr)
+            cycle
+          end if
           do e = w%mbeg(k), w%mend(k)
             if (w%ment_loc(e) /= b) cycle
             pn = w%ment_node(e)
@@ -672,6 +753,35 @@ contains
     end subroutine corner_rows_after
   end subroutine assemble_rows
 
+  !> The master entries of one slave segment whose multiplier is local
+  !> node b, merged into the row being assembled (assemble_rows without
+  !> per-entry directions): a node already in the row (slot > 0) adds its
+  !> weight, a new one is appended; the order and the sums are those of
+  !> the loop over the entries it replaces. The caller has made room for
+  !> every entry in rnode and rw.
+  pure subroutine merge_master_entries(loc, node, wt, b, slot, rnode, rw, nr)
+    integer, intent(in) :: loc(:), node(:)
+    real(wp), intent(in) :: wt(:)
+    integer, intent(in) :: b
+    integer, intent(inout) :: slot(:), rnode(:)
+    real(wp), intent(inout) :: rw(:)
+    integer, intent(inout) :: nr
+    integer :: e, pn, sl
+    do e = 1, size(loc)
+      if (loc(e) /= b) cycle
+      pn = node(e)
+      sl = slot(pn)
+      if (sl > 0) then
+        rw(sl) = rw(sl) + wt(e)
+      else
+        nr = nr + 1
+        rnode(nr) = pn
+        rw(nr) = wt(e)
+        slot(pn) = nr
+      end if
+    end do
+  end subroutine merge_master_entries
+
   !> Mortar segments of slave segment k against master segment l, and their
   !> contributions to G1 (g1loc) and G21 (master entries).
   subroutine integrate_overlap(slave, master, x, k, l, xs, nn, xi1, xi2, reach, open_reach, w)
@@ -692,10 +802,7 @@ contains
     s0 = min(xi1, xi2)
     s1 = max(xi1, xi2)
     if (s1 - s0 <= XI_SLIVER) return
-    if (nen == 2 .and. nenm == 2) then
-      call integrate_overlap_line(slave%axisymmetric, master, x, k, l, xs, nn, s0, s1, reach, open_reach, w)
-      return
-    end if
+    ! (2-node slave and master: integrate_overlap_line, called by build_mortar.)
     call load_segment(master, x, l, xm)
     ! Only a master that faces the slave, with a gap from -reach to
     ! +open_reach, counts (tested at the middle of the overlap: no coupling
@@ -1100,15 +1207,16 @@ contains
     end do
   end subroutine find_corner_rows
 
-  !> Slave nodal normals at the nodes of the near segments: the normalised
+  !> Slave nodal normals at the nodes of the segments segs (build_mortar:
+  !> the near segments a step reads): the normalised
   !> mean of the outward unit normals of the segments meeting at the node,
   !> each taken at the node (for 3-node segments the quadratic's own
   !> tangent there), summed in chain order; along the axis at an
   !> axisymmetric surface's axis node. Also clears their `covered`.
-  subroutine slave_normals(slave, x, vl, w)
+  subroutine slave_normals(slave, x, segs, w)
     type(contact_surface_t), intent(in) :: slave
     real(wp), intent(in) :: x(:,:)
-    type(verlet_t), intent(in) :: vl
+    integer, intent(in) :: segs(:)
     type(mortar_work_t), intent(inout) :: w
     integer :: k, a, c, tn, t, kk, nl, nsl
     real(wp) :: xs(2, 3), tt(2)
@@ -1119,8 +1227,8 @@ contains
       ! once per step for the segments at the nodes of the near ones, in
       ! a loop of its own (their square roots and divisions overlap).
       nsl = 0
-      do tn = 1, vl%nnear
-        k = vl%near(tn)
+      do tn = 1, size(segs)
+        k = segs(tn)
         do a = 1, 2
           c = w%pos(a, k)
           do t = 1, w%nadj(c)
@@ -1141,8 +1249,8 @@ contains
         w%snrm(:, kk) = [tt(2), -tt(1)]/max(w%slen(kk), tiny(1.0_wp))
       end do
     end if
-    do tn = 1, vl%nnear
-      k = vl%near(tn)
+    do tn = 1, size(segs)
+      k = segs(tn)
       do a = 1, slave%nen_seg
         c = w%pos(a, k)
         if (w%stamp(c) == w%nstep) cycle
