@@ -241,9 +241,12 @@ contains
     real(wp) :: mi(2), wa, wab, s
     real(wp) :: na1, na2, ta1, ta2, xa1, xa2, ya1, ya2, nb1, nb2, tb1, tb2, xb1, xb2
     knn(:, 1:m) = 0.0_wp
-    knt(:, 1:m) = 0.0_wp
-    ktn(:, 1:m) = 0.0_wp
-    ktt(:, 1:m) = 0.0_wp
+    ! The tangential blocks' lower halves (d < 0) are written whole by the
+    ! mirror below, over every entry a form reads (the rows of the matrix):
+    ! only the summed upper halves start at zero (issue #16, seventh pass).
+    knt(0:kbs, 1:m) = 0.0_wp
+    ktn(0:kbs, 1:m) = 0.0_wp
+    ktt(0:kbs, 1:m) = 0.0_wp
     do t = 1, ntouched
       p = touched(t)
       mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)
