@@ -4,7 +4,7 @@
 module raccord_delassus
   use raccord_kinds, only: wp
   use raccord_constraint_set, only: constraint_set_t
-  use raccord_solver_work, only: solver_work_t, ensure_work, ensure_band
+  use raccord_solver_work, only: solver_work_t, ensure_work, ensure_band, ensure_i
   implicit none
   private
 
@@ -25,10 +25,94 @@ contains
     real(wp), intent(in) :: minv(:,:), alpha(:), h_ratio, h
     logical, intent(in) :: friction
     type(solver_work_t), intent(inout) :: w
-    integer :: m, j, e, p, nn, ntouched, t, pos, kbs, ncap
+    integer :: m, nn, ntouched, kbs, ncap
     m = cs%m
     nn = size(minv, 2)
     call ensure_work(w, m, nn, cs%nent, cs%entry_dirs)
+    if (same_structure(cs, w)) then
+      ! The rows name the same nodes in the same order as at the last
+      ! build: the lists, their order and kb stand, only the weights are
+      ! this step's (issue #16, seventh pass: the lists were about 30 % of
+      ! the Delassus product, rebuilt every step).
+      call gather_weights(cs, w)
+      w%lists_kept = w%lists_kept + 1
+    else
+      call build_node_lists(cs, w)
+      w%lists_built = w%lists_built + 1
+    end if
+    ntouched = w%list_ntouched
+    w%kb = w%list_kb
+    call ensure_band(w%knn, w%kb, m)
+    call ensure_band(w%knt, w%kb, m)
+    call ensure_band(w%ktn, w%kb, m)
+    call ensure_band(w%ktt, w%kb, m)
+    kbs = ubound(w%knn, 1)
+    ncap = size(w%knn, 2)
+    if (cs%entry_dirs) then
+      call pair_sums_vectors(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
+        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_v(:, 1:cs%nent), minv, alpha, h_ratio, h, &
+        friction, w%knn, w%knt, w%ktn, w%ktt)
+    else if (friction) then
+      call pair_sums_friction(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
+        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
+        cs%normal(:, 1:m), cs%tangent(:, 1:m), minv, alpha, h_ratio, h, w%knn, w%knt, w%ktn, w%ktt)
+    else
+      call pair_sums_normal(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
+        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
+        cs%normal(:, 1:m), minv, alpha, h_ratio, h, w%knn)
+    end if
+  end subroutine delassus
+
+  !> The rows of cs name the nodes the node lists were last built from, in
+  !> the same order (row_ptr and ent_node as then, the same kind of
+  !> weights): build_node_lists would give the same lists.
+  logical function same_structure(cs, w) result(same)
+    type(constraint_set_t), intent(in) :: cs
+    type(solver_work_t), intent(in) :: w
+    integer :: j, e
+    same = .false.
+    if (cs%m /= w%list_m .or. cs%nent /= w%list_nent) return
+    if (cs%entry_dirs .neqv. w%list_dirs) return
+    do j = 1, cs%m + 1
+      if (cs%row_ptr(j) /= w%list_row_ptr(j)) return
+    end do
+    do e = 1, cs%nent
+      if (cs%ent_node(e) /= w%list_node(e)) return
+    end do
+    same = .true.
+  end function same_structure
+
+  !> This step's weights into the kept lists: position pos holds entry
+  !> list_ent(pos), where build_node_lists placed it.
+  subroutine gather_weights(cs, w)
+    type(constraint_set_t), intent(in) :: cs
+    type(solver_work_t), intent(inout) :: w
+    integer :: pos, e
+    do pos = 1, cs%nent
+      w%node_w(pos) = cs%ent_w(w%list_ent(pos))
+    end do
+    if (cs%entry_dirs) then
+      do pos = 1, cs%nent
+        e = w%list_ent(pos)
+        w%node_v(1, pos) = cs%ent_v(1, e)
+        w%node_v(2, pos) = cs%ent_v(2, e)
+      end do
+    end if
+  end subroutine gather_weights
+
+  !> The rows touching each node, as CSR over the touched nodes (node p's
+  !> rows at node_ptr(p) .. node_last(p) - 1 of node_row, with their
+  !> weights node_w / node_v, in increasing row order), the half band kb
+  !> they imply, and the structure they were built from (same_structure;
+  !> list_ent for gather_weights).
+  subroutine build_node_lists(cs, w)
+    type(constraint_set_t), intent(in) :: cs
+    type(solver_work_t), intent(inout) :: w
+    integer :: m, j, e, p, ntouched, t, pos
+    m = cs%m
+    call ensure_i(w%list_ent, cs%nent)
+    call ensure_i(w%list_node, cs%nent)
+    call ensure_i(w%list_row_ptr, m + 1)
     ! Rows touching each node, and the band width they imply.
     ntouched = 0
     do e = 1, cs%nent
@@ -55,23 +139,17 @@ contains
         pos = w%node_last(p)
         w%node_row(pos) = j
         w%node_w(pos) = cs%ent_w(e)
+        w%list_ent(pos) = e
         w%node_last(p) = pos + 1
       end do
     end do
     ! Entries with their own directions (cs%entry_dirs): the vector weights
-    ! in the same lists (a second pass, so the scalar sets are untouched).
+    ! in the same positions.
     if (cs%entry_dirs) then
-      do t = 1, ntouched
-        p = w%touched(t)
-        w%node_last(p) = w%node_ptr(p)
-      end do
-      do j = 1, m
-        do e = cs%row_ptr(j), cs%row_ptr(j + 1) - 1
-          p = cs%ent_node(e)
-          pos = w%node_last(p)
-          w%node_v(:, pos) = cs%ent_v(:, e)
-          w%node_last(p) = pos + 1
-        end do
+      do pos = 1, cs%nent
+        e = w%list_ent(pos)
+        w%node_v(1, pos) = cs%ent_v(1, e)
+        w%node_v(2, pos) = cs%ent_v(2, e)
       end do
     end if
     ! A node's rows are listed in increasing order (filled row by row).
@@ -81,30 +159,18 @@ contains
       w%kb = max(w%kb, w%node_row(w%node_last(p) - 1) - w%node_row(w%node_ptr(p)))
     end do
     w%kb = min(w%kb, m)
-    call ensure_band(w%knn, w%kb, m)
-    call ensure_band(w%knt, w%kb, m)
-    call ensure_band(w%ktn, w%kb, m)
-    call ensure_band(w%ktt, w%kb, m)
-    kbs = ubound(w%knn, 1)
-    ncap = size(w%knn, 2)
-    if (cs%entry_dirs) then
-      call pair_sums_vectors(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
-        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_v(:, 1:cs%nent), minv, alpha, h_ratio, h, &
-        friction, w%knn, w%knt, w%ktn, w%ktt)
-    else if (friction) then
-      call pair_sums_friction(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
-        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
-        cs%normal(:, 1:m), cs%tangent(:, 1:m), minv, alpha, h_ratio, h, w%knn, w%knt, w%ktn, w%ktt)
-    else
-      call pair_sums_normal(m, kbs, ncap, nn, cs%nent, ntouched, w%touched(1:ntouched), &
-        w%node_ptr, w%node_last, w%node_row(1:cs%nent), w%node_w(1:cs%nent), &
-        cs%normal(:, 1:m), minv, alpha, h_ratio, h, w%knn)
-    end if
-    ! Reset the per-node marks for the next call (touched nodes only).
+    ! Reset the per-node marks for the next build (touched nodes only).
     do t = 1, ntouched
       w%node_first(w%touched(t)) = 0
     end do
-  end subroutine delassus
+    w%list_row_ptr(1:m + 1) = cs%row_ptr(1:m + 1)
+    w%list_node(1:cs%nent) = cs%ent_node(1:cs%nent)
+    w%list_m = m
+    w%list_nent = cs%nent
+    w%list_dirs = cs%entry_dirs
+    w%list_ntouched = ntouched
+    w%list_kb = w%kb
+  end subroutine build_node_lists
 
   !> Knn of delassus, the band zeroed over its whole height (one contiguous
   !> block; only the rows -kb:kb are read). Stored as k(jb - ja, ja) =
@@ -175,9 +241,12 @@ contains
     real(wp) :: mi(2), wa, wab, s
     real(wp) :: na1, na2, ta1, ta2, xa1, xa2, ya1, ya2, nb1, nb2, tb1, tb2, xb1, xb2
     knn(:, 1:m) = 0.0_wp
-    knt(:, 1:m) = 0.0_wp
-    ktn(:, 1:m) = 0.0_wp
-    ktt(:, 1:m) = 0.0_wp
+    ! The tangential blocks' lower halves (d < 0) are written whole by the
+    ! mirror below, over every entry a form reads (the rows of the matrix):
+    ! only the summed upper halves start at zero (issue #16, seventh pass).
+    knt(0:kbs, 1:m) = 0.0_wp
+    ktn(0:kbs, 1:m) = 0.0_wp
+    ktt(0:kbs, 1:m) = 0.0_wp
     do t = 1, ntouched
       p = touched(t)
       mi = h_ratio/(1.0_wp + 0.5_wp*alpha(p)*h)*minv(:, p)

@@ -29,6 +29,15 @@ module raccord_solver_work
     integer, allocatable :: touched(:)
     real(wp), allocatable :: node_w(:)   !< (nent) the weight of each node_row entry
     real(wp), allocatable :: node_v(:,:) !< (2, nent) its vector weight (constraint sets with entry_dirs)
+    ! The structure the node lists were last built from (raccord_delassus):
+    ! while the rows' entries name the same nodes in the same order, the
+    ! lists are kept and only the weights are gathered again (list_ent).
+    integer, allocatable :: list_ent(:)     !< (nent) the entry e behind each node_row position
+    integer, allocatable :: list_row_ptr(:) !< (m + 1) cs%row_ptr of that build
+    integer, allocatable :: list_node(:)    !< (nent) cs%ent_node of that build
+    integer :: list_m = -1, list_nent = -1, list_ntouched = 0, list_kb = 0
+    logical :: list_dirs = .false.
+    integer :: lists_built = 0, lists_kept = 0   !< Delassus calls that built / kept the node lists
     ! Reduced (Delassus) solve: compressed active index, open list, the
     ! open multipliers in terms of the active ones (Z), the band of R.
     integer, allocatable :: ia(:), olist(:), zcnt(:), zcol(:,:)

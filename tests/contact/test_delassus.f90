@@ -10,7 +10,10 @@
 !> a solve without friction is that of one with friction, bit for bit;
 !> the tangential blocks are each other's mirrors, bit for bit;
 !> a second set after the first (the per-node marks are reset) is right
-!> too; and G1_OO Z + G1_OA = 0 on every open run, Z nonzero only next to
+!> too; the node lists are kept while the rows name the same nodes in the
+!> same order (new weights and normals give the blocks of a fresh
+!> workspace, bit for bit) and rebuilt when one entry names another node;
+!> and G1_OO Z + G1_OA = 0 on every open run, Z nonzero only next to
 !> a run.
 program test_delassus
   use raccord_kinds, only: wp
@@ -28,6 +31,7 @@ program test_delassus
 
   call run_tests('delassus', [ &
     new_test('K = B M^-1 B'' entry by entry, both orders, with and without friction', test_k), &
+    new_test('node lists kept while the rows name the same nodes, rebuilt when not', test_kept_lists), &
     new_test('Z = -G1_OO^-1 G1_OA on random open runs', test_z)])
 
 contains
@@ -62,6 +66,21 @@ contains
       if (allocated(failure)) return
     end do
   end subroutine test_k
+
+  !> Whether the four blocks of w and w2 agree bit for bit on the entries
+  !> of the m x m matrix within w's band (k(d, j) = K(j, j + d)).
+  logical function same_blocks(w, w2, m) result(ok)
+    type(solver_work_t), intent(in) :: w, w2
+    integer, intent(in) :: m
+    integer :: j, d
+    ok = .true.
+    do j = 1, m
+      do d = max(-w%kb, 1 - j), min(w%kb, m - j)
+        if (w%knn(d, j) /= w2%knn(d, j) .or. w%knt(d, j) /= w2%knt(d, j) .or. &
+          w%ktn(d, j) /= w2%ktn(d, j) .or. w%ktt(d, j) /= w2%ktt(d, j)) ok = .false.
+      end do
+    end do
+  end function same_blocks
 
   !> Whether the tangential blocks of w are the mirrors of each other:
   !> ktt(-d, j + d) = ktt(d, j), knt(-d, j + d) = ktn(d, j) and
@@ -131,6 +150,66 @@ contains
     write(msg, '(a, i0, a, i0, a, i0)') 'case ', icase, ': band width ', w%kb, ' is that of the rows, ', kbmax
     call check(failure, w%kb == kbmax, trim(msg))
   end subroutine check_blocks
+
+  !> The node lists of a workspace are kept across calls while the rows'
+  !> entries name the same nodes in the same order (issue #16, seventh
+  !> pass): with this step's weights and normals the four blocks are those
+  !> of a fresh workspace bit for bit, and right against the definition;
+  !> an entry moved to another node, or a set of another size, rebuilds.
+  subroutine test_kept_lists(failure)
+    type(failure_t), allocatable, intent(out) :: failure
+    type(constraint_set_t) :: cs
+    type(solver_work_t) :: w, wf
+    real(wp), allocatable :: minv(:,:), alpha(:)
+    integer :: m, nn, e, j, nb, nk, step
+    real(wp) :: h, th
+    m = 31
+    call build_set(cs, m, minv, alpha, nn)
+    h = 1.0e-3_wp
+    call delassus(cs, minv, alpha, 1.0_wp, h, .true., w)
+    call check(failure, w%lists_built == 1 .and. w%lists_kept == 0, 'the first call builds the lists')
+    if (allocated(failure)) return
+    do step = 1, 3
+      nb = w%lists_built
+      nk = w%lists_kept
+      ! the next step: new weights and directions on the same nodes
+      do e = 1, cs%nent
+        cs%ent_w(e) = cs%ent_w(e)*(1.0_wp + 0.2_wp*(urand() - 0.5_wp))
+      end do
+      do j = 1, m
+        th = 0.3_wp*(urand() - 0.5_wp)
+        cs%normal(:, j) = [sin(th), cos(th)]
+        cs%tangent(:, j) = [cos(th), -sin(th)]
+      end do
+      if (step == 3) then
+        ! one entry of row 5 moved to another node of the same count:
+        ! another structure
+        cs%ent_node(cs%row_ptr(6) - 1) = cs%ent_node(cs%row_ptr(6) - 1) + 1
+      end if
+      call delassus(cs, minv, alpha, 1.0_wp, h, .true., w)
+      if (step < 3) then
+        call check(failure, w%lists_kept == nk + 1 .and. w%lists_built == nb, 'the same nodes keep the lists')
+      else
+        call check(failure, w%lists_built == nb + 1 .and. w%lists_kept == nk, 'an entry on another node rebuilds')
+      end if
+      if (allocated(failure)) return
+      wf = solver_work_t()
+      call delassus(cs, minv, alpha, 1.0_wp, h, .true., wf)
+      call check(failure, wf%kb == w%kb, 'the band width of a fresh workspace')
+      if (allocated(failure)) return
+      call check(failure, same_blocks(w, wf, m), 'kept lists give the blocks of a fresh workspace, bit for bit')
+      if (allocated(failure)) return
+      call check_blocks(failure, cs, minv, alpha, 1.0_wp, h, w, 10 + step)
+      if (allocated(failure)) return
+    end do
+    ! a set of another size: rebuilt, right against the definition
+    nb = w%lists_built
+    call build_set(cs, m + 7, minv, alpha, nn)
+    call delassus(cs, minv, alpha, 1.0_wp, h, .true., w)
+    call check(failure, w%lists_built == nb + 1, 'a set of another size rebuilds')
+    if (allocated(failure)) return
+    call check_blocks(failure, cs, minv, alpha, 1.0_wp, h, w, 20)
+  end subroutine test_kept_lists
 
   subroutine test_z(failure)
     type(failure_t), allocatable, intent(out) :: failure
