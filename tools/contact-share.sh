@@ -34,6 +34,8 @@ while [ $# -gt 0 ]; do
 done
 case "$rounds" in ''|*[!0-9]*) echo "contact-share: -r takes a whole number, not '$rounds'" >&2; exit 2 ;; esac
 [ -x "$bin" ] || { echo "contact-share: no executable $bin (build it: cmake --build build)" >&2; exit 2; }
+# the runs start in each deck's folder (its mesh paths are relative to it)
+case "$bin" in /*) ;; *) bin=$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin") ;; esac
 if [ $# -eq 0 ]; then
   set -- "$root/input/paper/fig2a_mortar_p1_slave_block.nml" "$root/input/paper/fig1b_nts_slave_block.nml" \
     "$root/input/paper/fig3_mortar_p1_mu020.nml"
