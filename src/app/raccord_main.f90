@@ -33,7 +33,6 @@ program raccord_main
   use raccord_state, only: state_t, init_state
   use raccord_central_difference, only: compute_forces, predict_motion, update_energy, advance_state
   use raccord_contact_pair, only: contact_pair_t, init_contact_pairs, enforce_contact
-  use raccord_pair_thickness, only: check_pair_thickness
   use raccord_contact_energy, only: contact_energy_watch_t, watch_contact_energy, report_contact_energy, &
     contact_watch_record, restore_contact_watch, CONTACT_WATCH_LENGTH
   use raccord_run_report, only: report_plan, report_summary, run_stem
@@ -136,8 +135,6 @@ program raccord_main
   call build_model(scene, mesh, model, err)
   if (err%failed()) call finish(err)
   call init_contact_pairs(scene, mesh, model, pairs, err)    ! slave/master chains (paper section 3)
-  if (err%failed()) call finish(err)
-  call check_pair_thickness(scene, model, pairs, err)        ! one thickness per pair of plane bodies
   if (err%failed()) call finish(err)
 
   ! Phase 4: the stable time step (dt <= 2/omega_max) and the plan.

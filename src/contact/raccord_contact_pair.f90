@@ -129,6 +129,20 @@ contains
             model%bodies(bs)%name // '''; self-contact is not supported. Use surfaces of two bodies.')
           return
         end if
+        ! One thickness per pair of plane bodies: the multipliers are forces
+        ! over the whole out-of-plane thickness and the pair's pressure and
+        ! shear are per unit of the slave's; two thicknesses give no one
+        ! contact width in a 2D model (doc/scene-reference.md, &contact_pair).
+        ! Both are the deck's numbers, so they are compared exactly.
+        if (.not. model%axisymmetric .and. scene%bodies(bs)%thickness /= scene%bodies(bm)%thickness) then
+          call raise_error(err, EXIT_INPUT, where // ': the slave body ''' // model%bodies(bs)%name // &
+            ''' has thickness = ' // str(scene%bodies(bs)%thickness, 6) // ', the master body ''' // &
+            model%bodies(bm)%name // ''' thickness = ' // str(scene%bodies(bm)%thickness, 6) // &
+            '; two plane bodies in contact must have the same thickness (a 2D model has no one contact width ' // &
+            'for two, and the contact pressure would be per unit of the slave''s only): give both &body groups ' // &
+            'the thickness over which they touch')
+          return
+        end if
         ! Multipliers act through 1/mass of the free dofs: with every dof of
         ! both surfaces prescribed they cannot act at all (the solve then
         ! 'failed to converge' with a residual of 0).
