@@ -138,20 +138,13 @@ contains
         p = cs%ent_node(e)
         pos = w%node_last(p)
         w%node_row(pos) = j
-        w%node_w(pos) = cs%ent_w(e)
         w%list_ent(pos) = e
         w%node_last(p) = pos + 1
       end do
     end do
-    ! Entries with their own directions (cs%entry_dirs): the vector weights
-    ! in the same positions.
-    if (cs%entry_dirs) then
-      do pos = 1, cs%nent
-        e = w%list_ent(pos)
-        w%node_v(1, pos) = cs%ent_v(1, e)
-        w%node_v(2, pos) = cs%ent_v(2, e)
-      end do
-    end if
+    ! the weights (and, with cs%entry_dirs, the vector weights) in the
+    ! positions just placed, as on the steps that keep the lists
+    call gather_weights(cs, w)
     ! A node's rows are listed in increasing order (filled row by row).
     w%kb = 0
     do t = 1, ntouched
