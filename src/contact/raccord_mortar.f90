@@ -589,14 +589,6 @@ contains
             end if
           end do
           ! Master entries +G21(a, j).
-          if (.not. w%dirs) then
-            ! The same merge in a routine of plain arrays (in the loop below
-            ! every entry reloaded the components' descriptors).
-            if (nr + (w%mend(k) - w%mbeg(k) + 1) > size(w%rnode)) call grow_row(w)
-            call merge_master_entries(w%ment_loc(w%mbeg(k):w%mend(k)), w%ment_node(w%mbeg(k):w%mend(k)), &
-              w%ment_w(w%mbeg(k):w%mend(k)), b, w%slot, w%rnode, w%rw, nr)
-            cycle
-          end if
           do e = w%mbeg(k), w%mend(k)
             if (w%ment_loc(e) /= b) cycle
             pn = w%ment_node(e)
@@ -752,35 +744,6 @@ contains
       end do
     end subroutine corner_rows_after
   end subroutine assemble_rows
-
-  !> The master entries of one slave segment whose multiplier is local
-  !> node b, merged into the row being assembled (assemble_rows without
-  !> per-entry directions): a node already in the row (slot > 0) adds its
-  !> weight, a new one is appended; the order and the sums are those of
-  !> the loop over the entries it replaces. The caller has made room for
-  !> every entry in rnode and rw.
-  pure subroutine merge_master_entries(loc, node, wt, b, slot, rnode, rw, nr)
-    integer, intent(in) :: loc(:), node(:)
-    real(wp), intent(in) :: wt(:)
-    integer, intent(in) :: b
-    integer, intent(inout) :: slot(:), rnode(:)
-    real(wp), intent(inout) :: rw(:)
-    integer, intent(inout) :: nr
-    integer :: e, pn, sl
-    do e = 1, size(loc)
-      if (loc(e) /= b) cycle
-      pn = node(e)
-      sl = slot(pn)
-      if (sl > 0) then
-        rw(sl) = rw(sl) + wt(e)
-      else
-        nr = nr + 1
-        rnode(nr) = pn
-        rw(nr) = wt(e)
-        slot(pn) = nr
-      end if
-    end do
-  end subroutine merge_master_entries
 
   !> Mortar segments of slave segment k against master segment l, and their
   !> contributions to G1 (g1loc) and G21 (master entries).
