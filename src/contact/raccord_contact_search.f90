@@ -30,17 +30,17 @@ contains
   !> (a step moves nodes by a small fraction of an element). Cells have the
   !> mean inflated box size, so a node sees a few segments wherever the
   !> surface is refined; large distant segments span several cells.
-  !> With `pad`, every box is inflated by pad instead; with `skin`, by
+  !> With `skin`, every box is inflated by
   !> min(reach, length + skin) + skin: the bound, over every later position
   !> with no node moved by more than skin/2, of the inflation plus the
   !> relative motion of the two boxes (the candidate lists of
   !> raccord_contact_verlet, built for several steps).
-  subroutine build_bins(bins, x, seg, nen, reach, pad, skin)
+  subroutine build_bins(bins, x, seg, nen, reach, skin)
     type(bins_t), intent(inout) :: bins
     real(wp), intent(in) :: x(:,:)
     integer, intent(in) :: seg(:,:), nen
     real(wp), intent(in) :: reach
-    real(wp), intent(in), optional :: pad, skin
+    real(wp), intent(in), optional :: skin
     integer :: k, j, nseg, i0, i1, j0, j1, ii, jj, c, total
     real(wp) :: lo(2), hi(2), gl(2), gh(2), r, mean_size
     nseg = size(seg, 2)
@@ -60,7 +60,6 @@ contains
         hi = max(hi, x(:, seg(j, k)))
       end do
       r = min(reach, norm2(x(:, seg(2, k)) - x(:, seg(1, k))))
-      if (present(pad)) r = pad
       if (present(skin)) r = min(reach, norm2(x(:, seg(2, k)) - x(:, seg(1, k))) + skin) + skin
       ! A quadratic edge bulges beyond the box of its nodes by less than its
       ! own length for any sane mesh: the inflation covers it.
