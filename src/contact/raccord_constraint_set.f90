@@ -58,7 +58,7 @@ module raccord_constraint_set
     real(wp), allocatable :: coord(:)         !< reference arc length of the node (for profiles)
   end type constraint_set_t
 
-  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row
+  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row, cs_reserve, cs_close_row
 
 contains
 
@@ -239,6 +239,49 @@ contains
     cs%gap_w(j) = gap
     cs%slip_w(j) = slip
   end subroutine cs_put_row
+
+  !> Room for n more entries after the last (rows written in place by the
+  !> caller, cs_close_row); the entries written so far are kept.
+  subroutine cs_reserve(cs, n)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: n
+    if (cs%nent + n > size(cs%ent_node)) call grow(cs, size(cs%snode), 2*size(cs%ent_node) + n)
+  end subroutine cs_reserve
+
+  !> cs_put_row(..., merged=.true.) for a row whose n distinct entries the
+  !> caller has written in place, at cs%nent + 1 to cs%nent + n (ent_node,
+  !> ent_w and, with cs%entry_dirs, ent_v), within room taken by
+  !> cs_reserve: opens the row, takes them as they are, zeros included, and
+  !> closes it with the same sums in the same order, without the copy of the
+  !> entries through a caller's buffer (issue #16, eighth pass).
+  subroutine cs_close_row(cs, snode, gnode, normal, length, coord, n, x, du)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: snode, gnode
+    real(wp), intent(in) :: normal(2), length, coord
+    integer, intent(in) :: n
+    real(wp), intent(in) :: x(:,:), du(:,:)
+    integer :: e, j, p, e0
+    real(wp) :: tangent(2), gap, slip
+    call cs_add_row(cs, snode, gnode, normal, length, coord)
+    j = cs%m
+    e0 = cs%nent + 1
+    cs%nent = cs%nent + n
+    cs%row_ptr(j + 1) = cs%nent + 1
+    if (cs%entry_dirs) then
+      call vector_sums(cs, j, x, du)
+      return
+    end if
+    tangent = [normal(2), -normal(1)]
+    gap = 0.0_wp
+    slip = 0.0_wp
+    do e = e0, cs%nent
+      p = cs%ent_node(e)
+      gap = gap + cs%ent_w(e)*dot_product(x(:, p), normal)
+      slip = slip + cs%ent_w(e)*dot_product(du(:, p), tangent)
+    end do
+    cs%gap_w(j) = gap
+    cs%slip_w(j) = slip
+  end subroutine cs_close_row
 
   subroutine grow(cs, mcap, ecap)
     type(constraint_set_t), intent(inout) :: cs

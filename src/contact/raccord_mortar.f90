@@ -92,7 +92,7 @@ contains
     w%dirs = w%corners .and. w%entry_dirs .and. nen == 3
     if (w%dirs .and. .not. allocated(w%g1vec)) then
       allocate(w%g1vec(2, 3, 3, slave%nseg), source=0.0_wp)
-      allocate(w%ment_v(2, size(w%ment_node)), w%rv(2, size(w%rnode)))
+      allocate(w%ment_v(2, size(w%ment_node)))
     end if
     call verlet_refresh(v, x, slave, master, reach)
     if (v%rebuilt) then

@@ -11,9 +11,9 @@ module raccord_mortar_rows
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row, &
-    G1_MAX_BAND
-  use raccord_mortar_work, only: mortar_work_t, grow_row
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_reserve, &
+    cs_close_row, G1_MAX_BAND
+  use raccord_mortar_work, only: mortar_work_t
   implicit none
   private
 
@@ -54,7 +54,7 @@ contains
     type(verlet_t), intent(in) :: vl
     type(mortar_work_t), intent(inout) :: w
     type(constraint_set_t), intent(inout) :: cs
-    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr, pn, sl
+    integer :: c, m, j, t, k, b, ai, i, d, e, band, nen, cfirst, npos, q, run, best, c0, nr, pn, sl, e0, nbound
     logical :: fold, take
     real(wp) :: v, tol, g1col(-G1_MAX_BAND:G1_MAX_BAND)
 
@@ -108,6 +108,15 @@ contains
         if (w%pos(1, w%crow_seg(t)) == c) m = m + 1
       end do
     end do
+    ! The rows are written in place in the constraint set (cs_close_row):
+    ! room for all of them first. A near segment adds to the rows of its
+    ! nen nodes at most its nen slave entries and its master entries.
+    nbound = 0
+    do t = 1, vl%nnear
+      k = vl%near(t)
+      nbound = nbound + nen*(nen + max(w%mend(k) - w%mbeg(k) + 1, 0))
+    end do
+    call cs_reserve(cs, nbound)
     band = 0
     do q = 1, npos
       c = at(q)
@@ -115,7 +124,10 @@ contains
       if (j > 0) then
         ! The row's entries merged through w%slot in the order of their
         ! first contribution, the weights summed in contribution order (as
-        ! cs_add_entry did with a search per entry), and written at once.
+        ! cs_add_entry did with a search per entry), written straight into
+        ! the constraint set's storage after its last entry (e0): entry sl
+        ! of the row is cs entry e0 + sl.
+        e0 = cs%nent
         nr = 0
         g1col = 0.0_wp
         do t = 1, w%nadj(c)
@@ -136,18 +148,17 @@ contains
               pn = slave%seg(ai, k)
               sl = w%slot(pn)
               if (sl > 0) then
-                w%rw(sl) = w%rw(sl) - v
+                cs%ent_w(e0 + sl) = cs%ent_w(e0 + sl) - v
               else
-                if (nr == size(w%rnode)) call grow_row(w)
                 nr = nr + 1
-                w%rnode(nr) = pn
-                w%rw(nr) = -v
+                cs%ent_node(e0 + nr) = pn
+                cs%ent_w(e0 + nr) = -v
                 w%slot(pn) = nr
                 sl = nr
-                if (w%dirs) w%rv(:, sl) = 0.0_wp
+                if (w%dirs) cs%ent_v(:, e0 + sl) = 0.0_wp
               end if
               ! W_ij = -int N_i psi_j nu dGamma on slave nodes
-              if (w%dirs) w%rv(:, sl) = w%rv(:, sl) - w%g1vec(:, ai, b, k)
+              if (w%dirs) cs%ent_v(:, e0 + sl) = cs%ent_v(:, e0 + sl) - w%g1vec(:, ai, b, k)
             end if
             i = w%cidx(w%pos(ai, k))
             ! 3-node edges: the conditions' G1 is that of the corners' linear
@@ -166,35 +177,29 @@ contains
             pn = w%ment_node(e)
             sl = w%slot(pn)
             if (sl > 0) then
-              w%rw(sl) = w%rw(sl) + w%ment_w(e)
+              cs%ent_w(e0 + sl) = cs%ent_w(e0 + sl) + w%ment_w(e)
             else
-              if (nr == size(w%rnode)) call grow_row(w)
               nr = nr + 1
-              w%rnode(nr) = pn
-              w%rw(nr) = w%ment_w(e)
+              cs%ent_node(e0 + nr) = pn
+              cs%ent_w(e0 + nr) = w%ment_w(e)
               w%slot(pn) = nr
               sl = nr
-              if (w%dirs) w%rv(:, sl) = 0.0_wp
+              if (w%dirs) cs%ent_v(:, e0 + sl) = 0.0_wp
             end if
             ! W_aj = +int N_a psi_j nu dGamma on master nodes
-            if (w%dirs) w%rv(:, sl) = w%rv(:, sl) + w%ment_v(:, e)
+            if (w%dirs) cs%ent_v(:, e0 + sl) = cs%ent_v(:, e0 + sl) + w%ment_v(:, e)
           end do
         end do
-        if (w%dirs) then
-          ! Each entry along its own vector weight (the row's normal kept
-          ! for the row's outputs only).
-          call cs_put_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
-            xpred, du, merged=.true., wv=w%rv(:, 1:nr))
-        else if (w%weighted) then
-          call cs_put_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
-            xpred, du, merged=.true.)
+        ! (dirs: each entry along its own vector weight, the row's normal
+        ! kept for the row's outputs only.)
+        if (w%weighted .and. .not. w%dirs) then
+          call cs_close_row(cs, c, slave%node(c), row_normal(c), w%trib(c), slave%s0(c), nr, xpred, du)
         else
-          call cs_put_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c), w%rnode(1:nr), w%rw(1:nr), &
-            xpred, du, merged=.true.)
+          call cs_close_row(cs, c, slave%node(c), w%nrm(:, c), w%trib(c), slave%s0(c), nr, xpred, du)
         end if
         cs%g1(:, j) = g1col
-        do e = 1, nr
-          w%slot(w%rnode(e)) = 0
+        do e = e0 + 1, e0 + nr
+          w%slot(cs%ent_node(e)) = 0
         end do
         if (nen == 3 .and. w%corners) then
           ! 3-node edges: the multipliers live on the corners only, so G1

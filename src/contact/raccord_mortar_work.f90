@@ -99,16 +99,13 @@ module raccord_mortar_work
     real(wp), allocatable :: xi_val(:)        !< projected slave parameter of the corner
     integer, allocatable :: f_seg(:)          !< (master ncorner) slave segment whose end f_end was taken at
     real(wp), allocatable :: f_end(:)         !< F of project_along_field at that segment's end node
-    ! The row being assembled (assemble_rows): its distinct nodes in the
-    ! order of first contribution, their summed weights, and each global
-    ! node's place in it (0: not in the row).
+    ! The row being assembled (assemble_rows, which writes its distinct
+    ! nodes and summed weights straight into the constraint set): each
+    ! global node's place in it (0: not in the row).
     integer, allocatable :: slot(:)           !< (largest global node number of the pair)
-    integer, allocatable :: rnode(:)
-    real(wp), allocatable :: rw(:)
-    real(wp), allocatable :: rv(:,:)          !< (2, :) the row's vector weights (dirs only)
   end type mortar_work_t
 
-  public :: init_mortar, load_segment, grow_row, grow_entries
+  public :: init_mortar, load_segment, grow_entries
 
 contains
 
@@ -156,7 +153,6 @@ contains
     end do
     allocate(w%xi_seg(nc), w%f_seg(nc), source=0)
     allocate(w%slot(max(maxval(slave%node), maxval(master%node))), source=0)
-    allocate(w%rnode(64), w%rw(64))
     allocate(w%xi_val(nc), w%f_end(nc), source=0.0_wp)
     ! Local node a of slave segment k sits at chain position stride*(k-1)+1
     ! (start), stride*k+1 (end), stride*(k-1)+2 (mid): the order of
@@ -188,23 +184,6 @@ contains
       xs(:, a) = x(:, surf%seg(a, k))
     end do
   end subroutine load_segment
-
-  !> Double the row buffer of assemble_rows, keeping its entries.
-  subroutine grow_row(w)
-    type(mortar_work_t), intent(inout) :: w
-    integer :: cap
-    real(wp), allocatable :: tr(:), tv(:,:)
-    cap = 2*size(w%rnode)
-    call grow_int(w%rnode, cap, size(w%rnode))
-    allocate(tr(cap))
-    tr(1:size(w%rw)) = w%rw
-    call move_alloc(tr, w%rw)
-    if (allocated(w%rv)) then
-      allocate(tv(2, cap))
-      tv(:, 1:size(w%rv, 2)) = w%rv
-      call move_alloc(tv, w%rv)
-    end if
-  end subroutine grow_row
 
   !> Double the master-entry buffers, keeping the entries written so far.
   subroutine grow_entries(w)
