@@ -82,8 +82,8 @@ contains
     type(verlet_t), intent(inout) :: v
     type(constraint_set_t), intent(inout) :: cs
     type(mortar_work_t), intent(inout) :: w
-    integer :: k, a, c, nen, l, t, tn, cprev
-    real(wp) :: xs(2, 3), nn(2, 3), xi1, xi2, tsgn
+    integer :: k, a, c, nen, l, t, tn, cprev, side, side0
+    real(wp) :: xs(2, 3), nn(2, 3), xi1, xi2, tsgn, xi, flo, fhi, pc(2)
 
     w%multiplier = multiplier
     nen = slave%nen_seg
@@ -121,8 +121,8 @@ contains
       if (multiplier == MULT_DUAL) call dual_coefficients(nen, xs, slave%axisymmetric, w%adual)
       w%mbeg(k) = w%nment + 1
       ! The side of the segment's normal lines a corner past both its
-      ! ends lies on (root_along_field's test, once per segment: corner_xi
-      ! decides those corners without the call).
+      ! ends lies on (root_along_field's test, once per segment: the corner
+      ! projection below decides those corners without the call).
       tsgn = sign(1.0_wp, (xs(1, 2) - xs(1, 1))*(nn(2, 1) + nn(2, 2)) - (xs(2, 2) - xs(2, 1))*(nn(1, 1) + nn(1, 2)))
       cprev = 0
       do t = w%cbeg(tn), w%cend(tn)
@@ -131,14 +131,52 @@ contains
         ! the slave along its normal field, each corner projected once per
         ! slave segment. The list is ascending: a candidate that follows
         ! its chain neighbour starts at the corner that one ended at (the
-        ! value corner_xi would return from its cache, without the call).
+        ! value the corner cache below holds, without recomputing it).
         ! (cprev: the last candidate's end corner, 0 before the first.)
+        side0 = 1
         if (w%mcorner(1, l) == cprev) then
           xi1 = xi2
-        else
-          xi1 = corner_xi(w%mcorner(1, l))
+          side0 = 2
         end if
-        xi2 = corner_xi(w%mcorner(2, l))
+        ! The slave parameter xi of master corner c on slave segment k (xs,
+        ! nn): the root of project_along_field, computed once per (k, c).
+        ! Its end values F(-1), F(+1) are those of the slave nodes; F at
+        ! the start node of k is the end value the corner had on segment
+        ! k - 1 when it was seen there. (Written once, here: as an internal
+        ! function, called twice, gfortran did not inline it, and the call
+        ! and its host-frame loads were about 100 instructions per corner,
+        ! 209 corners per step on Fig. 2(a); doc/performance.md, eighth pass.)
+        do side = side0, 2
+          c = w%mcorner(side, l)
+          if (w%xi_seg(c) == k) then
+            xi = w%xi_val(c)
+          else
+            pc = x(:, master%corner(c))
+            if (k > 1 .and. w%f_seg(c) == k - 1) then
+              flo = w%f_end(c)
+            else
+              ! end_offset written out (a call for one cross product)
+              flo = (pc(1) - xs(1, 1))*nn(2, 1) - (pc(2) - xs(2, 1))*nn(1, 1)
+            end if
+            fhi = (pc(1) - xs(1, 2))*nn(2, 2) - (pc(2) - xs(2, 2))*nn(1, 2)
+            w%f_seg(c) = k
+            w%f_end(c) = fhi
+            if (flo /= 0.0_wp .and. fhi /= 0.0_wp .and. sign(1.0_wp, flo) == sign(1.0_wp, fhi)) then
+              ! No root inside: past the end root_along_field picks (the same
+              ! test, written out; most corners of the candidates are such).
+              xi = merge(1.0_wp, -1.0_wp, sign(1.0_wp, flo) == tsgn)
+            else
+              xi = root_along_field(nen, xs, nn, pc, flo, fhi)
+            end if
+            w%xi_seg(c) = k
+            w%xi_val(c) = xi
+          end if
+          if (side == 1) then
+            xi1 = xi
+          else
+            xi2 = xi
+          end if
+        end do
         cprev = w%mcorner(2, l)
         ! Most candidates lie past one end of the slave segment (both
         ! corners clipped to it): an empty overlap, tested here without
@@ -189,38 +227,6 @@ contains
       end do
     end if
     call assemble_rows(slave, xpred, du, v, w, cs)
-  contains
-    !> Slave parameter of master corner c on slave segment k (xs, nn): the
-    !> root of project_along_field, computed once per (k, c). Its end values
-    !> F(-1), F(+1) are those of the slave nodes; F at the start node of k is
-    !> the end value the corner had on segment k - 1 when it was seen there.
-    real(wp) function corner_xi(c) result(xi)
-      integer, intent(in) :: c
-      real(wp) :: flo, fhi, pc(2)
-      if (w%xi_seg(c) == k) then
-        xi = w%xi_val(c)
-        return
-      end if
-      pc = x(:, master%corner(c))
-      if (k > 1 .and. w%f_seg(c) == k - 1) then
-        flo = w%f_end(c)
-      else
-        ! end_offset written out (a call for one cross product)
-        flo = (pc(1) - xs(1, 1))*nn(2, 1) - (pc(2) - xs(2, 1))*nn(1, 1)
-      end if
-      fhi = (pc(1) - xs(1, 2))*nn(2, 2) - (pc(2) - xs(2, 2))*nn(1, 2)
-      w%f_seg(c) = k
-      w%f_end(c) = fhi
-      if (flo /= 0.0_wp .and. fhi /= 0.0_wp .and. sign(1.0_wp, flo) == sign(1.0_wp, fhi)) then
-        ! No root inside: past the end root_along_field picks (the same
-        ! test, written out; most corners of the candidates are such).
-        xi = merge(1.0_wp, -1.0_wp, sign(1.0_wp, flo) == tsgn)
-      else
-        xi = root_along_field(nen, xs, nn, pc, flo, fhi)
-      end if
-      w%xi_seg(c) = k
-      w%xi_val(c) = xi
-    end function corner_xi
   end subroutine build_mortar
 
   !> Mortar segments of slave segment k against master segment l, and their
