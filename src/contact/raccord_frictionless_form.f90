@@ -5,7 +5,7 @@
 module raccord_frictionless_form
   use raccord_kinds, only: wp
   use raccord_constraint_set, only: constraint_set_t
-  use raccord_band_solver, only: band_cholesky_solve
+  use raccord_band_solver, only: band_cholesky_solve, zero_band
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ZMAX, ensure1, ensure2, ensure_i, ensure_i2
   use raccord_solver_conditions, only: update_sets, holds_to_roundoff, band_matvec
   use raccord_g1_runs, only: open_from_active, run_solve
@@ -188,7 +188,8 @@ contains
     do a = 1, m
       if (ia(a) > 0) na = na + 1
     end do
-    rb(1:krcap + 1, 1:na) = 0.0_wp
+    ! whole columns of rb in one pass (the rows below krcap + 1 are not read)
+    call zero_band(ldr*na, rb)
     do a = 1, m
       if (ia(a) <= 0) cycle
       xr(ia(a)) = -gap_w(a)

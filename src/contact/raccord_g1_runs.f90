@@ -5,7 +5,7 @@
 module raccord_g1_runs
   use raccord_kinds, only: wp
   use raccord_constraint_set, only: constraint_set_t
-  use raccord_band_solver, only: band_solve, band_factor, band_subst
+  use raccord_band_solver, only: band_solve, band_factor, band_subst, zero_band
   use raccord_solver_work, only: solver_work_t, ZMAX, ensure2
   implicit none
   private
@@ -147,7 +147,9 @@ contains
     g1b = cs%g1_band
     ldab = 3*g1b + 1
     call ensure2(w%ab, ldab, nc)
-    w%ab(1:ldab, 1:nc) = 0.0_wp
+    ! whole columns of w%ab in one pass (zero_band: the section (1:ldab, 1:nc)
+    ! was one memset call per column; rows below ldab are not read)
+    call zero_band(size(w%ab, 1)*nc, w%ab)
     do p = 1, nc
       jp = olist(p1 - 1 + p)
       w%fcol(p) = max(1, p - g1b)

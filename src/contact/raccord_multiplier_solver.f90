@@ -50,7 +50,7 @@ module raccord_multiplier_solver
   use raccord_constraint_set, only: constraint_set_t
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ST_STICK, ST_SLIP, &
     ensure1, ensure_i, ensure_i2
-  use raccord_solver_conditions, only: condition_residual, g1c
+  use raccord_solver_conditions, only: condition_residual
   use raccord_delassus, only: delassus
   use raccord_frictionless_form, only: solve_frictionless
   use raccord_nts_friction_form, only: solve_diagonal_friction
@@ -79,6 +79,7 @@ contains
     type(solver_work_t), intent(inout) :: w
     integer :: m, j, nu, info, bw
     logical :: friction, same
+    real(wp) :: gjj
 
     m = cs%m
     w%iterations = 0
@@ -95,7 +96,11 @@ contains
     if (.not. friction) where (w%status(1:m) == ST_SLIP) w%status(1:m) = ST_STICK
     do j = 1, m
       if (w%knn(0, j) > 0.0_wp) then
-        w%c(j) = g1c(cs, j, j)**2/(dt*dt*w%knn(0, j))
+        ! G1 of the conditions on the diagonal, g1c(cs, j, j), written out:
+        ! the function of another module was one call per constraint
+        gjj = 1.0_wp
+        if (.not. cs%weighted) gjj = cs%g1(0, j)
+        w%c(j) = gjj**2/(dt*dt*w%knn(0, j))
       else
         w%c(j) = 0.0_wp
         w%dropped = w%dropped + 1
