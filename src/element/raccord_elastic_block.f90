@@ -65,7 +65,7 @@ module raccord_elastic_block
   use raccord_plasticity, only: j2_t, nhist
   use raccord_axi_kernel, only: kernel_axi_q4, kernel_axi_q8
   use raccord_q4_kernel, only: kernel_q4, nq4, q4_bx1, q4_bx2, q4_by1, q4_by2, q4_g1, q4_m11, q4_m12, q4_m22
-  use raccord_q8_kernel, only: kernel_q8, gather_q8
+  use raccord_q8_kernel, only: kernel_q8, gather_q8, scatter_q8
   implicit none
   private
 
@@ -768,7 +768,10 @@ contains
           e0 = (ic - 1)*chunk_len
           nc = min(chunk_len, blk%nel - e0)
           if (blk%kernel == KERN_Q8) then
-            ! the plane Q8 kernel gathers its geometry with u (one pass over conn)
+            ! the plane Q8 kernel gathers its geometry with u (one pass over
+            ! conn); gather_q8 and scatter_q8 take the (2, nnode) node arrays
+            ! as explicit-shape (2, *), passed without a copy as they are
+            ! contiguous
             call gather_q8(nc, blk%conn(:, e0 + 1:e0 + nc), u, blk%xn, ue, xe)
           else
             do a = 1, nen
@@ -810,13 +813,17 @@ contains
               watch%active(:, ic) = act > 0.0_wp
             end if
           end if
-          do a = 1, nen
-            do i = 1, nc
-              node = blk%conn(a, e0 + i)
-              f(1, node) = f(1, node) + fe(i, 1, a)
-              f(2, node) = f(2, node) + fe(i, 2, a)
+          if (blk%kernel == KERN_Q8) then
+            call scatter_q8(nc, blk%conn(:, e0 + 1:e0 + nc), fe, f)
+          else
+            do a = 1, nen
+              do i = 1, nc
+                node = blk%conn(a, e0 + i)
+                f(1, node) = f(1, node) + fe(i, 1, a)
+                f(2, node) = f(2, node) + fe(i, 2, a)
+              end do
             end do
-          end do
+          end if
         end do chunks
       end do groups
       !$omp end do

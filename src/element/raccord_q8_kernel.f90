@@ -43,7 +43,7 @@ module raccord_q8_kernel
   implicit none
   private
 
-  public :: kernel_q8, gather_q8
+  public :: kernel_q8, gather_q8, scatter_q8
 
   integer, parameter :: chunk_len = fin_chunk_len, max_nen = 8, ngp = 9
 
@@ -55,33 +55,85 @@ contains
   !> over conn. xq(:, :, a) = x_a - x_1 is the subtraction the block did once
   !> at set-up when it stored them, so the forces keep their bits. Scalar
   !> loads (novector): the 8-lane hardware gather of this CPU was slower
-  !> than them here (doc/performance.md, "Q8 element step").
+  !> than them here (doc/performance.md, "Q8 element step"). The node
+  !> arrays are explicit-shape (2, *): with their leading extent known, a
+  !> node's address is one scaled index instead of the multiplications by
+  !> run-time strides an assumed-shape dummy costs per load
+  !> (doc/performance.md, "Third pass").
   pure subroutine gather_q8(nc, conn, u, x, ue, xq)
-    integer, intent(in) :: nc, conn(:,:)
-    real(wp), intent(in) :: u(:,:), x(:,:)
+    integer, intent(in) :: nc, conn(max_nen, nc)
+    real(wp), intent(in) :: u(2, *), x(2, *)
     real(wp), intent(out) :: ue(chunk_len, 2, max_nen), xq(chunk_len, 2, max_nen)
-    real(wp) :: x1, y1
-    integer :: a, i, node
-    ! element by element: node 1's coordinates stay in registers and each
-    ! element's 8 node numbers are one contiguous read
+    real(wp) :: x1, y1, x2, y2
+    integer :: a, i, node, node2
+    ! two elements at a time, element by element within the pair: node 1's
+    ! coordinates stay in registers, each element's 8 node numbers are one
+    ! contiguous read, and the two values stored one after the other fall in
+    ! the same cache line, which lets the core commit them together
     !GCC$ novector
-    do i = 1, nc
+    do i = 1, nc - 1, 2
       node = conn(1, i)
+      node2 = conn(1, i + 1)
       ue(i, 1, 1) = u(1, node)
+      ue(i + 1, 1, 1) = u(1, node2)
       ue(i, 2, 1) = u(2, node)
+      ue(i + 1, 2, 1) = u(2, node2)
       x1 = x(1, node)
       y1 = x(2, node)
+      x2 = x(1, node2)
+      y2 = x(2, node2)
       xq(i, 1, 1) = 0.0_wp
+      xq(i + 1, 1, 1) = 0.0_wp
       xq(i, 2, 1) = 0.0_wp
+      xq(i + 1, 2, 1) = 0.0_wp
       do a = 2, max_nen
         node = conn(a, i)
+        node2 = conn(a, i + 1)
         ue(i, 1, a) = u(1, node)
+        ue(i + 1, 1, a) = u(1, node2)
         ue(i, 2, a) = u(2, node)
+        ue(i + 1, 2, a) = u(2, node2)
         xq(i, 1, a) = x(1, node) - x1
+        xq(i + 1, 1, a) = x(1, node2) - x2
         xq(i, 2, a) = x(2, node) - y1
+        xq(i + 1, 2, a) = x(2, node2) - y2
       end do
     end do
+    if (mod(nc, 2) == 1) then
+      node = conn(1, nc)
+      ue(nc, 1, 1) = u(1, node)
+      ue(nc, 2, 1) = u(2, node)
+      x1 = x(1, node)
+      y1 = x(2, node)
+      xq(nc, 1, 1) = 0.0_wp
+      xq(nc, 2, 1) = 0.0_wp
+      do a = 2, max_nen
+        node = conn(a, nc)
+        ue(nc, 1, a) = u(1, node)
+        ue(nc, 2, a) = u(2, node)
+        xq(nc, 1, a) = x(1, node) - x1
+        xq(nc, 2, a) = x(2, node) - y1
+      end do
+    end if
   end subroutine gather_q8
+
+  !> f(:, conn(a, i)) += fe(i, :, a) for the chunk's nc elements, node by
+  !> node in the order of the block's generic scatter (the same additions
+  !> in the same order, so the same bits), with f explicit-shape (2, *)
+  !> for the reason given at gather_q8.
+  pure subroutine scatter_q8(nc, conn, fe, f)
+    integer, intent(in) :: nc, conn(max_nen, nc)
+    real(wp), intent(in) :: fe(chunk_len, 2, max_nen)
+    real(wp), intent(inout) :: f(2, *)
+    integer :: a, i, node
+    do a = 1, max_nen
+      do i = 1, nc
+        node = conn(a, i)
+        f(1, node) = f(1, node) + fe(i, 1, a)
+        f(2, node) = f(2, node) + fe(i, 2, a)
+      end do
+    end do
+  end subroutine scatter_q8
 
   !> fe = K_e ue for the first nc elements of a chunk (eqs. 6.6-6.10): r the
   !> positive 3-point Gauss abscissa of the block's rule, w its 3x3 weights,
