@@ -205,6 +205,13 @@ contains
     kw = lower(unquoted_key(sl%text(2:l(1))))
     at = loc_text(d, sl)
 
+    ! a '*' with no keyword after it (a comment is '**'): skipped as an
+    ! unknown keyword, the data lines after it with it
+    if (len(kw) == 0) then
+      call raise_error(err, EXIT_INPUT, at // ': a keyword line without a keyword ("' // clip(trim(sl%text)) // &
+        '"): write the keyword after the *, or ** for a comment line')
+      return
+    end if
     ! Parts and instances (Abaqus/CAE's default) place each part by its
     ! instance's translation and rotation, and number each part from 1;
     ! read flat, the geometry would be silently wrong. Refused.
@@ -231,6 +238,15 @@ contains
         'or hold them elsewhere): write the input with every node and element listed in global x, y ' // &
         '(Abaqus/CAE and CalculiX cgx, send all abq, write it so)')
       return
+    end do
+    ! the keywords whose parameters raccord reads: each one once, and the
+    ! named ones with their value (get_param takes the first of two and
+    ! skips one without '=': ELSET=a, ELSET=b read as a, a bare ELSET as
+    ! no set at all)
+    do k = 1, size(MESH_KEYWORDS)
+      if (kw /= trim(MESH_KEYWORDS(k))) cycle
+      call check_params(sl%text, f, l, nf, at, err)
+      if (err%failed()) return
     end do
     if (kw == 'include') then
       ! textual inclusion: the current block goes on into the included file,
@@ -753,6 +769,49 @@ contains
       return
     end do
   end subroutine get_param
+
+  !> A keyword line's parameters: each name at most once, and the names
+  !> that take a value (VALUE_PARAMS) with one. Names are compared as
+  !> Abaqus does, without regard to case and blanks.
+  subroutine check_params(text, f, l, nf, at, err)
+    character(len=*), intent(in) :: text, at
+    integer, intent(in) :: f(:), l(:), nf
+    type(error_t), intent(inout) :: err
+    character(len=*), parameter :: VALUE_PARAMS(6) = [character(len=6) :: 'nset', 'elset', 'type', 'name', &
+      'input', 'system']
+    integer :: k, j
+    character(len=:), allocatable :: name, other
+    do k = 2, nf
+      if (f(k) > l(k)) cycle
+      name = param_name(text(f(k):l(k)))
+      if (len(name) == 0) cycle
+      if (index(text(f(k):l(k)), '=') == 0 .and. any(VALUE_PARAMS == name)) then
+        call raise_error(err, EXIT_INPUT, at // ': parameter ' // clip(trim(adjustl(text(f(k):l(k))))) // &
+          ' has no value: write ' // unquoted_key(name) // '=' // merge('file', 'name', name == 'input') // &
+          ' (a name without its value was read as no ' // unquoted_key(name) // ' at all)')
+        return
+      end if
+      do j = k + 1, nf
+        if (f(j) > l(j)) cycle
+        other = param_name(text(f(j):l(j)))
+        if (other /= name) cycle
+        call raise_error(err, EXIT_INPUT, at // ': parameter ' // unquoted_key(name) // ' is given twice (' // &
+          clip(trim(adjustl(text(f(k):l(k))))) // ' and ' // clip(trim(adjustl(text(f(j):l(j))))) // &
+          '); only the first was read: give it once')
+        return
+      end do
+    end do
+  contains
+    !> The parameter's name, lower case, without blanks (before any '=').
+    pure function param_name(field) result(key)
+      character(len=*), intent(in) :: field
+      character(len=:), allocatable :: key
+      integer :: eq
+      eq = index(field, '=')
+      if (eq == 0) eq = len(field) + 1
+      key = lower(unquoted_key(field(1:eq - 1)))
+    end function param_name
+  end subroutine check_params
 
   !> True when a keyword line carries the bare parameter key (lower case).
   logical function has_flag(text, f, l, nf, key)
