@@ -200,7 +200,8 @@ contains
     if (k > 0) then
       call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no) // ': column ' // str(k) // &
         ' holds a control character, ' // control_name(iachar(line(k:k))) // ', which an editor does not ' // &
-        'show; delete it, or re-export the mesh as plain text')
+        'show; delete it, or re-export the mesh as plain text (a binary file, with its NUL bytes and control ' // &
+        'codes, is not a mesh text file)')
       eof = .true.
     end if
   end subroutine read_line
