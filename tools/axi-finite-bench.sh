@@ -16,30 +16,12 @@ out=${2:-results/axi_finite_bench}
 rep=${3:-3}
 mkdir -p "$out"
 cd "$out"
-mesh() { # FILE NX NY Q8(0/1)
-  awk -v nx="$2" -v ny="$3" -v q="$4" 'BEGIN {
-    st = q ? 2 : 1; mx = st * nx; my = st * ny
-    print "*NODE"
-    for (j = 0; j <= my; j++) for (i = 0; i <= mx; i++) {
-      if (q && i % 2 == 1 && j % 2 == 1) continue
-      printf "%d, %.10e, %.10e\n", 1 + i + (mx + 1) * j, 2.0 * i / mx, 1.0 * j / my
-    }
-    print "*ELEMENT, TYPE=" (q ? "CAX8" : "CAX4") ", ELSET=body"
-    e = 0
-    for (j = 0; j < my; j += st) for (i = 0; i < mx; i += st) {
-      n1 = 1 + i + (mx + 1) * j; n2 = n1 + st; n4 = n1 + st * (mx + 1); n3 = n4 + st
-      e++
-      if (q) printf "%d, %d, %d, %d, %d, %d, %d, %d, %d\n", e, n1, n2, n3, n4, n1 + 1, n2 + (mx + 1), n4 + 1, n1 + (mx + 1)
-      else printf "%d, %d, %d, %d, %d\n", e, n1, n2, n3, n4
-    }
-    print "*NSET, NSET=bottom"
-    for (i = 0; i <= mx; i++) print 1 + i
-    print "*NSET, NSET=top"
-    for (i = 0; i <= mx; i++) print 1 + i + my * (mx + 1)
-  }' > "$1"
+here=$(cd "$(dirname "$0")" && pwd)
+mesh() { # FILE NX NY TYPE
+  sh "$here/rect-mesh-inp.sh" "$4" "$2" "$3" 0 2 0 1 10 bottom=bottom top=top > "$1"
 }
-mesh q4.inp 160 80 0
-mesh q8.inp 80 40 1
+mesh q4.inp 160 80 CAX4
+mesh q8.inp 80 40 CAX8
 echo "# repeat type law hypothesis ns_per_element_step steps"
 i=1
 while [ "$i" -le "$rep" ]; do

@@ -16,7 +16,7 @@
 !> checkpoint that exists is complete; a killed write leaves the previous
 !> checkpoint in place.
 module raccord_checkpoint
-  use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
+  use hdf5, only: hid_t, h5fclose_f
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_IO, EXIT_INPUT
   use raccord_strings, only: str, append_text
@@ -35,7 +35,7 @@ module raccord_checkpoint
   use raccord_crc32, only: crc32_t, crc_add, crc_value, crc_hex
   use raccord_mesh, only: mesh_t
   use raccord_h5_read, only: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_write_i8, &
-    h5_read_attr_int
+    h5_read_attr_int, h5_open_input
   implicit none
   private
 
@@ -505,34 +505,13 @@ contains
     integer(hid_t), intent(out) :: file
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: where, fmt, version
-    integer :: hdferr, fv
-    integer(i8) :: nbytes
+    integer :: fv
     file = -1
     if (err%failed()) return
     where = 'checkpoint "' // path // '"'
-    if (.not. file_exists(path)) then
-      call raise_error(err, EXIT_INPUT, 'no ' // where // '; give the <stem>.checkpoint.h5 a stopped run wrote ' // &
-        '(a .part file is an unfinished checkpoint and cannot be used)')
-      return
-    end if
-    ! a pipe (FIFO) would block HDF5's open for ever; it has size 0, as a
-    ! device or an empty file has
-    inquire(file=path, size=nbytes)
-    if (nbytes == 0) then
-      call raise_error(err, EXIT_INPUT, where // ' is empty (0 bytes), or is a pipe or device: give the ' // &
-        '<stem>.checkpoint.h5 a stopped run wrote, or run the scene afresh without --restart')
-      return
-    end if
-    call h5_acquire(err)
+    call h5_open_input(path, where, 'give the <stem>.checkpoint.h5 a stopped run wrote (a .part file is an ' // &
+      'unfinished checkpoint and cannot be used), or run the scene afresh without --restart', '', file, err)
     if (err%failed()) return
-    call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
-    if (hdferr /= 0) then
-      file = -1
-      call raise_error(err, EXIT_INPUT, 'cannot read ' // where // ': not an HDF5 file, or truncated or damaged; ' // &
-        'run the scene afresh without --restart')
-      call h5_release(err)
-      return
-    end if
     call h5_read_attr_text(file, 'format', fmt, where, err)
     if (.not. err%failed()) then
       if (fmt /= FORMAT_NAME) call raise_error(err, EXIT_INPUT, where // ' is not a raccord checkpoint (format "' // &

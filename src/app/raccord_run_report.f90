@@ -117,7 +117,7 @@ contains
     if (model%has_finite) call log_raw('time    finite strain: the step follows the deforming mesh ' // &
       '(current length and wave speed, at most the dt above); the step count is an estimate')
     if (model%scaling%active) call report_mass_scaling(scene, model, plan)
-    cost = measure_step_cost(model, plan, pairs)
+    cost = measure_step_cost(model, plan, pairs, scene%run%output_dir)
     ! What the run does before its first step (reading, building, this
     ! trial): the processor time of this process so far.
     call cpu_time(setup)

@@ -25,6 +25,11 @@ module raccord_step_trial
   use raccord_contact_pair, only: contact_pair_t, enforce_contact
   use raccord_history_columns, only: history_width, fill_history_row
   use raccord_history_file, only: ROW_FORMAT
+  use hdf5, only: hid_t, h5fclose_f
+  use raccord_h5, only: h5_acquire, h5_release, h5_create_file
+  use raccord_h5_table, only: h5_create_table, h5_append_rows
+  use raccord_files, only: is_directory, delete_file
+  use raccord_output_state, only: HISTORY_BLOCK_ROWS, HISTORY_BLOCK_VALUES
   implicit none
   private
 
@@ -70,10 +75,11 @@ contains
   !> is timed in processor time, which other processes on the machine do
   !> not inflate: the estimate is then the run time on a core of its own (a
   !> batch job's); a threaded run is timed in wall time.
-  function measure_step_cost(model, plan, pairs) result(cost)
+  function measure_step_cost(model, plan, pairs, dir) result(cost)
     type(model_t), intent(in) :: model
     type(time_plan_t), intent(in) :: plan
     type(contact_pair_t), intent(in) :: pairs(:)
+    character(len=*), intent(in) :: dir      !< the run's output folder (its history files' disk)
     type(step_cost_t) :: cost
     type(state_t) :: scratch
     type(contact_pair_t), allocatable :: trial(:)
@@ -133,41 +139,93 @@ contains
     end do
     t1 = seconds_now(threaded)
     cost%frame = t1 - t0
-    call time_history_row(model, scratch, trial, threaded, cost)
+    call time_history_row(model, scratch, trial, threaded, dir, cost)
     call log_set_level(level)
   end function measure_step_cost
 
   !> Seconds per history row (raccord_output write_due_outputs): the
   !> row's values from the trial's state (fill_history_row, whose
-  !> reactions sum the constrained dofs once per support) and its line in
-  !> the history file's format, written and flushed to a scratch file as
-  !> the run flushes every row. Left out before: a scene with many
-  !> supports written at every step of 10^6 steps ran ten times its
-  !> estimate. The HDF5 copy of the rows (appended in blocks) is not timed.
-  subroutine time_history_row(model, state, pairs, threaded, cost)
+  !> reactions sum the constrained dofs once per support), its line in
+  !> the history file's format, written and flushed as the run flushes
+  !> every row, and its copy in /history of the results file, appended in
+  !> blocks of the run's size (flush_history). Both files are trial files
+  !> in the run's output folder, on the disk the run writes to (they were
+  !> a scratch file in TMPDIR, and the HDF5 copy was not timed), deleted
+  !> afterwards; without the folder (--check before the run made it) the
+  !> text goes to a scratch file and the HDF5 copy is left out. Left out
+  !> before: a scene with many supports written at every step of 10^6
+  !> steps ran ten times its estimate.
+  subroutine time_history_row(model, state, pairs, threaded, dir, cost)
     type(model_t), intent(in) :: model
     type(state_t), intent(in) :: state
     type(contact_pair_t), intent(in) :: pairs(:)
     logical, intent(in) :: threaded
+    character(len=*), intent(in) :: dir
     type(step_cost_t), intent(inout) :: cost
-    real(wp), allocatable :: row(:)
+    real(wp), allocatable :: row(:), block(:,:)
     real(wp) :: t0, t1
-    integer :: u, ios, n
-    logical :: opened
+    integer :: u, ios, n, nbuf, hdferr, cerr
+    integer(hid_t) :: file
+    logical :: opened, in_dir, h5ok, acquired
+    character(len=:), allocatable :: text_name, h5_name
+    type(error_t) :: err, rerr
     allocate(row(history_width(model, pairs)))
-    open(newunit=u, status='scratch', action='readwrite', form='formatted', iostat=ios)
-    opened = ios == 0          ! without a scratch file, the rows' values alone are timed
+    allocate(block(size(row), max(1, min(HISTORY_BLOCK_ROWS, HISTORY_BLOCK_VALUES/max(1, size(row))))))
+    in_dir = is_directory(dir)
+    text_name = dir // '/.raccord-trial.history.txt.part'
+    h5_name = dir // '/.raccord-trial.h5.part'
+    if (in_dir) then
+      open(newunit=u, file=text_name, status='replace', action='write', form='formatted', iostat=ios)
+    else
+      open(newunit=u, status='scratch', action='readwrite', form='formatted', iostat=ios)
+    end if
+    opened = ios == 0          ! without a file, the rows' values alone are timed
+    h5ok = .false.
+    acquired = .false.
+    hdferr = -1
+    if (in_dir) then
+      call h5_acquire(err)
+      acquired = .not. err%failed()
+      if (acquired) then
+        call h5_create_file(h5_name, file, hdferr)
+        h5ok = hdferr == 0
+        if (h5ok) call h5_create_table(file, '/history', size(row), size(block, 2), h5_name, err)
+        h5ok = h5ok .and. .not. err%failed()
+      end if
+    end if
     n = 0
+    nbuf = 0
     t0 = seconds_now(threaded)
     t1 = t0
     do while (n < history_trial_rows .and. t1 - t0 < history_seconds)
       call fill_history_row(model, state, pairs, row)
       if (ios == 0) write(u, ROW_FORMAT, iostat=ios) row
       if (ios == 0) flush(u, iostat=ios)
+      if (h5ok) then
+        nbuf = nbuf + 1
+        block(:, nbuf) = row
+        if (nbuf == size(block, 2)) then
+          call h5_append_rows(file, '/history', block, h5_name, err)
+          h5ok = .not. err%failed()
+          nbuf = 0
+        end if
+      end if
       n = n + 1
       t1 = seconds_now(threaded)
     end do
-    if (opened) close(u, iostat=ios)
+    if (opened) then
+      if (in_dir) then
+        close(u, status='delete', iostat=ios)
+      else
+        close(u, iostat=ios)
+      end if
+    end if
+    if (in_dir) then
+      if (hdferr == 0) call h5fclose_f(file, cerr)
+      if (acquired) call h5_release(rerr)
+      call delete_file(h5_name)
+      call delete_file(text_name)
+    end if
     cost%history_rows = n
     cost%history = (t1 - t0)/real(max(1, n), wp)
   end subroutine time_history_row

@@ -10,14 +10,14 @@
 !> file is opened read-only and never changed.
 module raccord_verify
   use, intrinsic :: iso_c_binding, only: c_int8_t
-  use hdf5, only: hid_t, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
+  use hdf5, only: hid_t, h5fclose_f
   use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
   use raccord_crc32, only: crc32_t, crc_add, crc_value
   use raccord_files, only: file_exists, crc_of_file
-  use raccord_h5, only: h5_acquire, h5_release, h5_link_exists
-  use raccord_h5_read, only: h5_read_attr_text, h5_read_attr_int
+  use raccord_h5, only: h5_release, h5_link_exists
+  use raccord_h5_read, only: h5_read_attr_text, h5_read_attr_int, h5_open_input
   use raccord_checkpoint, only: CHECKPOINT_FORMAT_VERSION
   use raccord_h5_verify, only: h5_verify_tree, h5_read_raw
   implicit none
@@ -34,33 +34,14 @@ contains
     type(error_t), intent(inout) :: err
     integer(hid_t) :: file
     integer :: hdferr, ndata, version
-    integer(i8) :: nbytes
     character(len=:), allocatable :: where, fmt, extra
     type(error_t) :: cerr
     report = ''
-    where = '"' // path // '"'
-    if (.not. file_exists(path)) then
-      call raise_error(err, EXIT_INPUT, 'no file ' // where // ' to verify')
-      return
-    end if
-    ! a pipe (FIFO) would block HDF5's open for ever; it has size 0, as a
-    ! device or an empty file has
-    inquire(file=path, size=nbytes)
-    if (nbytes == 0) then
-      call raise_error(err, EXIT_INPUT, where // ' is empty (0 bytes), or is a pipe or device: not a raccord ' // &
-        '.h5 or .checkpoint.h5 file')
-      return
-    end if
-    call h5_acquire(err)
+    where = 'file "' // path // '"'
+    call h5_open_input(path, where, 'give a raccord .h5 or .checkpoint.h5 file', ', or still marked open ' // &
+      'for writing (a run is writing it, or was killed: raccord --restart clears the mark of its results file)', &
+      file, err)
     if (err%failed()) return
-    call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
-    if (hdferr /= 0) then
-      call raise_error(err, EXIT_INPUT, where // ' cannot be opened as HDF5: not a raccord .h5 or ' // &
-        '.checkpoint.h5 file, damaged, or still marked open for writing (a run is writing it, or was ' // &
-        'killed: raccord --restart clears the mark of its results file)')
-      call h5_release(cerr)
-      return
-    end if
     call h5_read_attr_text(file, 'format', fmt, where, err)
     if (err%failed()) then
       call err%clear()

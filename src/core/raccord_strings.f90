@@ -5,7 +5,7 @@ module raccord_strings
   implicit none
   private
 
-  public :: str, lower, starts_with, ends_with, clipped, text_flaw, append_text
+  public :: str, lower, starts_with, ends_with, clipped, text_flaw, append_text, first_control, control_name
 
   !> Convert a number to its shortest readable text.
   interface str
@@ -230,4 +230,42 @@ contains
       k = k + n + 1
     end do
   end function text_flaw
+  !> Position of the first control character of a text line (ASCII codes
+  !> 1 to 31 and 127 other than the tab, and other than the carriage
+  !> return when cr_ok), 0 when there is none. NUL (0) is left to the
+  !> callers, whose message for it is about binary and UTF-16 files.
+  pure integer function first_control(line, cr_ok) result(pos)
+    character(len=*), intent(in) :: line
+    logical, intent(in) :: cr_ok
+    integer :: i, c
+    pos = 0
+    do i = 1, len(line)
+      c = iachar(line(i:i))
+      if (c >= 32 .and. c /= 127) cycle
+      if (c == 0 .or. c == 9 .or. (c == 13 .and. cr_ok)) cycle
+      pos = i
+      return
+    end do
+  end function first_control
+
+  !> A control character's name for a message: "form feed (0x0C)".
+  pure function control_name(code) result(name)
+    integer, intent(in) :: code
+    character(len=:), allocatable :: name
+    character(len=*), parameter :: HEX = '0123456789ABCDEF'
+    select case (code)
+    case (8); name = 'backspace'
+    case (11); name = 'vertical tab'
+    case (12); name = 'form feed'
+    case (13); name = 'carriage return'
+    case (27); name = 'escape'
+    case (127); name = 'delete'
+    case default; name = 'code'
+    end select
+    if (name == 'code') then
+      name = 'code 0x' // HEX(code/16 + 1:code/16 + 1) // HEX(mod(code, 16) + 1:mod(code, 16) + 1)
+    else
+      name = name // ' (0x' // HEX(code/16 + 1:code/16 + 1) // HEX(mod(code, 16) + 1:mod(code, 16) + 1) // ')'
+    end if
+  end function control_name
 end module raccord_strings

@@ -15,7 +15,7 @@ module raccord_files
   private
 
   public :: rename_file, make_directory, file_exists, delete_file, file_size, truncate_file
-  public :: write_failure_reason, crc_of_file, broken_link, relative_note
+  public :: write_failure_reason, crc_of_file, broken_link, relative_note, is_directory
 
   !> access(2) mode "does the file exist".
   integer(c_int), parameter :: F_OK = 0_c_int

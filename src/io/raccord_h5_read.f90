@@ -9,19 +9,21 @@
 module raccord_h5_read
   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr
   use, intrinsic :: iso_fortran_env, only: int64
-  use hdf5, only: hid_t, hsize_t, size_t, h5dopen_f, h5dclose_f, h5dread_f, h5dwrite_f, h5dget_space_f, &
+  use hdf5, only: hid_t, hsize_t, size_t, h5fopen_f, H5F_ACC_RDONLY_F, h5dopen_f, h5dclose_f, h5dread_f, &
+    h5dwrite_f, h5dget_space_f, &
     h5dget_type_f, h5sclose_f, h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, &
     h5tget_size_f, h5tclose_f, h5tcopy_f, h5tset_size_f, h5tset_strpad_f, h5aopen_f, h5aread_f, h5aclose_f, &
     h5aget_type_f, h5screate_simple_f, h5dcreate_f, h5kind_to_type, &
     H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_NATIVE_CHARACTER, H5T_STR_NULLPAD_F, H5_INTEGER_KIND
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT, EXIT_IO
-  use raccord_h5, only: h5_link_exists, h5_ensure_groups
+  use raccord_h5, only: h5_link_exists, h5_ensure_groups, h5_acquire, h5_release
+  use raccord_files, only: file_exists, is_directory, broken_link, relative_note
   implicit none
   private
 
   public :: h5_read_real, h5_read_int, h5_read_i8, h5_read_text, h5_read_attr_text, h5_read_attr_int, h5_write_i8, &
-    h5_dims
+    h5_dims, h5_open_input
 
   !> Longest text attribute read (raccord writes a few dozen characters).
   integer(size_t), parameter :: MAX_ATTR_TEXT = 65536
@@ -35,6 +37,55 @@ module raccord_h5_read
   end interface h5_read_real
 
 contains
+
+  !> Open the HDF5 file an input names (a checkpoint to restart from, a
+  !> file to verify) read-only, with the library acquired (h5_acquire):
+  !> the caller closes the file and releases the library. A missing file,
+  !> a broken link, a folder, an empty file, a pipe or a device (size 0:
+  !> HDF5's open would block on a pipe for ever) and a file HDF5 cannot
+  !> open are EXIT_INPUT errors
+  !> naming `where` (e.g. 'checkpoint "x.checkpoint.h5"'), ending with the
+  !> caller's `fix`; `open_note` adds to the cannot-open message why that
+  !> may be. On an error, file = -1 and the library is released.
+  subroutine h5_open_input(path, where, fix, open_note, file, err)
+    character(len=*), intent(in) :: path, where, fix, open_note
+    integer(hid_t), intent(out) :: file
+    type(error_t), intent(inout) :: err
+    integer :: hdferr
+    integer(i8) :: nbytes
+    type(error_t) :: cerr
+    character(len=:), allocatable :: target
+    file = -1
+    if (err%failed()) return
+    if (broken_link(path, target)) then
+      call raise_error(err, EXIT_INPUT, where // ' is a broken symbolic link: it points to "' // target // '"' // &
+        relative_note(target) // ', which does not exist (or is a loop of links); ' // fix)
+      return
+    end if
+    if (.not. file_exists(path)) then
+      call raise_error(err, EXIT_INPUT, 'no ' // where // '; ' // fix)
+      return
+    end if
+    ! a folder has a size, and HDF5 says only that it cannot open it
+    if (is_directory(path)) then
+      call raise_error(err, EXIT_INPUT, where // ' is a folder, not a file; ' // fix)
+      return
+    end if
+    inquire(file=path, size=nbytes)
+    if (nbytes == 0) then
+      call raise_error(err, EXIT_INPUT, where // ' is empty (0 bytes), or is a pipe or device: ' // fix)
+      return
+    end if
+    call h5_acquire(err)
+    if (err%failed()) return
+    call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+    if (hdferr /= 0) then
+      file = -1
+      call raise_error(err, EXIT_INPUT, where // ' cannot be opened as HDF5: not an HDF5 file, or truncated ' // &
+        'or damaged' // open_note // '; ' // fix)
+      call h5_release(cerr)
+    end if
+  end subroutine h5_open_input
 
   !> Dimensions of a dataset in Fortran order (a(m, n) -> [m, n]).
   subroutine h5_dims(loc, path, dims, where, err)

@@ -73,14 +73,16 @@ contains
       return
     end if
 
+    ! before the elements' checks, which would call an element of a mesh
+    ! too large for double precision inverted
+    call check_extent(path, factor, draft%x(:, 1:draft%nnode), err)
+    if (err%failed()) return
     call finalize_mesh(draft, mesh, err)
     if (err%failed()) then
       call prefix_error(err, 'checking mesh')
       return
     end if
     if (factor /= 1.0_wp) mesh%x = factor*mesh%x
-    call check_extent(path, factor, mesh, err)
-    if (err%failed()) return
 
     call log_info('read_mesh', path // ': ' // str(mesh%nnode) // ' nodes, ' // str(mesh%nelem) // &
       ' elements (' // str(count(mesh%etype == ELEM_Q4)) // ' Q4, ' // str(count(mesh%etype == ELEM_Q8)) // &
@@ -91,20 +93,31 @@ contains
   !> The scaled mesh must keep its areas, masses and stiffnesses finite and
   !> non-zero in double precision: a size across between 1e-100 and 1e100
   !> (a scale of 1e200 made every area infinite, and the run then reported
-  !> a model without stiffness).
-  subroutine check_extent(path, factor, mesh, err)
+  !> a model without stiffness), and coordinates of at most 1e100 (a node
+  !> at 1e200 in the file itself was reported as an inverted element).
+  !> x: the file's coordinates (2, nnode), before the factor.
+  subroutine check_extent(path, factor, x, err)
     character(*), intent(in) :: path
     real(wp), intent(in) :: factor
-    type(mesh_t), intent(in) :: mesh
+    real(wp), intent(in) :: x(:,:)
     type(error_t), intent(inout) :: err
     real(wp), parameter :: smallest = 1.0e-100_wp, largest = 1.0e100_wp
-    real(wp) :: across
-    if (mesh%nnode == 0) return
-    across = max(maxval(mesh%x(1, :)) - minval(mesh%x(1, :)), maxval(mesh%x(2, :)) - minval(mesh%x(2, :)))
-    if (across >= smallest .and. across <= largest) return
-    call raise_error(err, EXIT_INPUT, 'mesh ' // path // ' scaled by &mesh scale = ' // str(factor) // &
-      ' is ' // str(across) // ' across, outside 1e-100 to 1e100 where areas and stiffnesses stay finite ' // &
-      'in double precision: give the factor from mesh units to deck units (e.g. scale = 1.0e3 for a ' // &
-      'mesh in m and a deck in mm)')
+    real(wp) :: across, reach
+    character(len=:), allocatable :: what
+    if (size(x, 2) == 0) return
+    across = factor*max(maxval(x(1, :)) - minval(x(1, :)), maxval(x(2, :)) - minval(x(2, :)))
+    reach = factor*maxval(abs(x))
+    if (across >= smallest .and. across <= largest .and. reach <= largest) return
+    what = 'mesh ' // path
+    if (factor /= 1.0_wp) what = what // ' scaled by &mesh scale = ' // str(factor)
+    if (across >= smallest .and. across <= largest) then
+      call raise_error(err, EXIT_INPUT, what // ' has a node ' // str(reach) // ' from the origin, beyond 1e100 ' // &
+        'where areas and stiffnesses stay finite in double precision: give the coordinates in other units ' // &
+        '(or the factor from mesh units to deck units, &mesh scale), and the mesh near the origin')
+    else
+      call raise_error(err, EXIT_INPUT, what // ' is ' // str(across) // ' across, outside 1e-100 to 1e100 ' // &
+        'where areas and stiffnesses stay finite in double precision: give the factor from mesh units to ' // &
+        'deck units (e.g. scale = 1.0e3 for a mesh in m and a deck in mm)')
+    end if
   end subroutine check_extent
 end module raccord_mesh_io

@@ -6,7 +6,7 @@
 module raccord_text_reader
   use raccord_kinds, only: wp, i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
-  use raccord_strings, only: str
+  use raccord_strings, only: str, first_control, control_name
   use raccord_files, only: broken_link, relative_note
   implicit none
   private
@@ -132,7 +132,7 @@ contains
     type(error_t), intent(inout) :: err
     character(len=4096) :: buf
     character(len=512) :: msg
-    integer :: ios, nread
+    integer :: ios, nread, k
     line = ''
     eof = .false.
     ! A unit read past its end fails with a runtime message: once the end
@@ -188,6 +188,20 @@ contains
     if (index(line, achar(0)) > 0) then
       call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no) // ': a NUL byte: this is a binary ' // &
         'file, not a mesh text file (Gmsh .msh ASCII or Abaqus .inp)')
+      eof = .true.
+      return
+    end if
+    ! Other control characters are invisible in an editor and made the
+    ! line read as something else: a form feed before "$Nodes" was "expected
+    ! a section header such as "$Nodes", found "$Nodes"", one before
+    ! *ELEMENT a node id. A carriage return left inside a line (old Mac
+    ! line ends) is one of them.
+    k = first_control(line, cr_ok=.false.)
+    if (k > 0) then
+      call raise_error(err, EXIT_INPUT, tf%path // ':' // str(tf%line_no) // ': column ' // str(k) // &
+        ' holds a control character, ' // control_name(iachar(line(k:k))) // ', which an editor does not ' // &
+        'show; delete it, or re-export the mesh as plain text (a binary file, with its NUL bytes and control ' // &
+        'codes, is not a mesh text file)')
       eof = .true.
     end if
   end subroutine read_line

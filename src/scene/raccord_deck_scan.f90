@@ -16,7 +16,7 @@ module raccord_deck_scan
   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
   use raccord_kinds, only: i8
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
-  use raccord_strings, only: str, lower
+  use raccord_strings, only: str, lower, first_control, control_name
   use raccord_files, only: broken_link, relative_note
   implicit none
   private
@@ -192,6 +192,17 @@ contains
       if (index(line, achar(0)) > 0) then
         call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': the line holds NUL bytes: the deck is ' // &
           'saved as UTF-16 ("Unicode") or is not text; save it as plain text (UTF-8 or ASCII)')
+        exit lines
+      end if
+      ! Other control characters (a form feed, an escape pasted from a
+      ! terminal) are invisible in an editor: a form feed before '&time'
+      ! read as "text outside a group: '&time'". Tabs and the CR of CRLF
+      ! line ends are blanks.
+      i = first_control(line, cr_ok=.true.)
+      if (i > 0) then
+        call raise_error(err, EXIT_INPUT, path // ':' // str(lnum) // ': column ' // str(i) // ' holds a ' // &
+          'control character, ' // control_name(iachar(line(i:i))) // ', which an editor does not show; ' // &
+          'delete it (the deck is plain text: letters, digits, blanks, tabs)')
         exit lines
       end if
       ! A UTF-8 byte-order mark (editors on Windows save one) is no text.
@@ -518,6 +529,18 @@ contains
         return
       end if
       if (s > 1) then
+        ! name%part: a component of a derived type, which no key is
+        if (block%mask(s-1:s-1) == '%') then
+          q = s - 2
+          do while (q >= 1)
+            if (.not. is_name_char(block%mask(q:q))) exit
+            q = q - 1
+          end do
+          call raise_error(err, EXIT_INPUT, here // str(block%line_of(s)) // ': &' // block%group // &
+            ': key ''' // shorten(lower(block%mask(q+1:e))) // ''' names a component (name%part); the keys ' // &
+            'are plain names: write ' // shorten(lower(block%mask(q+1:s-2))) // ' = value')
+          return
+        end if
         if (block%mask(s-1:s-1) /= ' ' .and. block%mask(s-1:s-1) /= ',') then
           call raise_error(err, EXIT_INPUT, here // str(block%line_of(s)) // ': &' // block%group // &
             ': key ''' // shorten(lower(block%mask(s:e))) // ''' runs into the text before it (''' // &

@@ -55,7 +55,8 @@
 #   longtext, manysets, inpgeom, ...), make_cases_deck.sh
 #   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval) and
 #   make_cases_tags.sh (ids, entities, slowtext) and make_cases_rules.sh
-#   (thickness, brokenlink, setrange, endpart).
+#   (thickness, brokenlink, setrange, endpart) and make_cases_hidden.sh
+#   (control, abqparam, extent, h5input).
 set -u
 LC_ALL=C
 export LC_ALL
@@ -827,5 +828,10 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # thicknesses, broken links, set ids beyond 2^31, a lone *End Part),
 # described there.
 . "$(dirname "$0")/make_cases_rules.sh"
+# Faults the user cannot see where the message pointed (control
+# characters, an Abaqus parameter given twice or without its value, a mesh
+# too large for double precision, a folder or a broken link as an HDF5
+# input), described there.
+. "$(dirname "$0")/make_cases_hidden.sh"
 
 echo "make_cases: $ncase cases in $cases"

@@ -32,34 +32,18 @@ if ! command -v "$ccx" > /dev/null 2>&1; then
   echo "tube-axi-ccx: CalculiX (ccx) is not installed; skipping the comparison (Debian: apt-get install calculix-ccx)"
   exit 0
 fi
+here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 cd "$out"
 rm -f ccx_result.txt tube.dat tube.frd tube.sta
 
 # 8 x 1 CAX8 or 16 x 2 CAX4 on [1, 2] x [0, 0.2], nodes numbered as write_mesh_inp does
-awk -v nu="$nu" -v etype="$etype" -v bore="$bore" 'BEGIN {
-  q = (etype == "CAX8")
-  nx = q ? 8 : 16; ny = q ? 1 : 2; st = q ? 2 : 1; mx = st * nx; my = st * ny
-  print "*HEADING"
-  print "raccord axisymmetric neo-Hooke tube, bore driven to 1.5 A (written by tools/calculix/tube-axi-ccx.sh)"
-  print "*NODE"
-  for (j = 0; j <= my; j++) for (i = 0; i <= mx; i++) {
-    if (q && i % 2 == 1 && j % 2 == 1) continue
-    id = 1 + i + (mx + 1) * j
-    printf "%d, %.12e, %.12e\n", id, 1.0 + i / mx, 0.2 * j / my
-  }
-  print "*ELEMENT, TYPE=" etype ", ELSET=body"
-  e = 0
-  for (j = 0; j < my; j += st) for (i = 0; i < mx; i += st) {
-    n1 = 1 + i + (mx + 1) * j; n2 = n1 + st; n4 = n1 + st * (mx + 1); n3 = n4 + st
-    e++
-    if (q) printf "%d, %d, %d, %d, %d, %d, %d, %d, %d\n", e, n1, n2, n3, n4, n1 + 1, n2 + (mx + 1), n4 + 1, n1 + (mx + 1)
-    else printf "%d, %d, %d, %d, %d\n", e, n1, n2, n3, n4
-  }
-  print "*NSET, NSET=bore"
-  for (j = 0; j <= my; j++) print 1 + (mx + 1) * j
-  print "*NSET, NSET=faces"
-  for (i = 0; i <= mx; i++) { print 1 + i; print 1 + i + my * (mx + 1) }
+{
+echo "*HEADING"
+echo "raccord axisymmetric neo-Hooke tube, bore driven to 1.5 A (written by tools/calculix/tube-axi-ccx.sh)"
+if [ "$etype" = CAX8 ]; then nx=8; ny=1; else nx=16; ny=2; fi
+sh "$here/../rect-mesh-inp.sh" "$etype" "$nx" "$ny" 1 2 0 0.2 12 bore=left faces=bottom+top
+awk -v nu="$nu" -v bore="$bore" 'BEGIN {
   g = 1.0 / (2.0 * (1.0 + nu)); k = 1.0 / (3.0 * (1.0 - 2.0 * nu))
   print "*MATERIAL, NAME=RUBBER"
   print "*HYPERELASTIC, NEO HOOKE"
@@ -77,7 +61,8 @@ awk -v nu="$nu" -v etype="$etype" -v bore="$bore" 'BEGIN {
   print "*NODE PRINT, NSET=faces"
   print "U"
   print "*END STEP"
-}' > tube.inp
+}'
+} > tube.inp
 
 if ! "$ccx" -i tube > ccx.log 2>&1 || grep -q '\*ERROR' ccx.log; then
   echo "tube-axi-ccx: ccx failed; see $out/ccx.log and tube.sta" >&2
