@@ -55,7 +55,7 @@
 #   longtext, manysets, inpgeom, ...), make_cases_deck.sh
 #   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval) and
 #   make_cases_tags.sh (ids, entities, slowtext) and make_cases_rules.sh
-#   (thickness, brokenlink, setrange, endpart) and make_cases_hidden.sh
+#   (thickness, brokenlink, setrange, endpart) and make_cases_text.sh
 #   (control, abqparam, extent, h5input).
 set -u
 LC_ALL=C
@@ -832,6 +832,6 @@ cmd_case bad-short-option "an unknown short option" -x plate.nml
 # characters, an Abaqus parameter given twice or without its value, a mesh
 # too large for double precision, a folder or a broken link as an HDF5
 # input), described there.
-. "$(dirname "$0")/make_cases_hidden.sh"
+. "$(dirname "$0")/make_cases_text.sh"
 
 echo "make_cases: $ncase cases in $cases"
