@@ -150,6 +150,27 @@ contains
 
   !> Weighted gap and slip of row j from the entries' vector weights:
   !> g_w = sum_p W_jp . x_p, s_w = sum_p W^perp_jp . du_p (module header).
+  !> The row's weighted gap and slip, g_w = sum_e w_e x_e . n and
+  !> s_w = sum_e w_e du_e . t with t = (n_2, -n_1), for rows of scalar
+  !> weights (vector_sums for per-entry directions).
+  subroutine scalar_sums(cs, j, normal, x, du)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: j
+    real(wp), intent(in) :: normal(2), x(:,:), du(:,:)
+    integer :: e, p
+    real(wp) :: tangent(2), gap, slip
+    tangent = [normal(2), -normal(1)]
+    gap = 0.0_wp
+    slip = 0.0_wp
+    do e = cs%row_ptr(j), cs%row_ptr(j + 1) - 1
+      p = cs%ent_node(e)
+      gap = gap + cs%ent_w(e)*dot_product(x(:, p), normal)
+      slip = slip + cs%ent_w(e)*dot_product(du(:, p), tangent)
+    end do
+    cs%gap_w(j) = gap
+    cs%slip_w(j) = slip
+  end subroutine scalar_sums
+
   subroutine vector_sums(cs, j, x, du)
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: j
@@ -185,8 +206,7 @@ contains
     real(wp), intent(in) :: x(:,:), du(:,:)
     logical, intent(in), optional :: merged
     real(wp), intent(in), optional :: wv(:,:)
-    integer :: e, f, j, p, e0
-    real(wp) :: tangent(2), gap, slip
+    integer :: e, f, j, e0
     logical :: as_is
     as_is = .false.
     if (present(merged)) as_is = merged
@@ -228,16 +248,7 @@ contains
       call vector_sums(cs, j, x, du)
       return
     end if
-    tangent = [normal(2), -normal(1)]
-    gap = 0.0_wp
-    slip = 0.0_wp
-    do e = e0, cs%nent
-      p = cs%ent_node(e)
-      gap = gap + cs%ent_w(e)*dot_product(x(:, p), normal)
-      slip = slip + cs%ent_w(e)*dot_product(du(:, p), tangent)
-    end do
-    cs%gap_w(j) = gap
-    cs%slip_w(j) = slip
+    call scalar_sums(cs, j, normal, x, du)
   end subroutine cs_put_row
 
   !> Room for n more entries after the last (rows written in place by the
@@ -260,27 +271,16 @@ contains
     real(wp), intent(in) :: normal(2), length, coord
     integer, intent(in) :: n
     real(wp), intent(in) :: x(:,:), du(:,:)
-    integer :: e, j, p, e0
-    real(wp) :: tangent(2), gap, slip
+    integer :: j
     call cs_add_row(cs, snode, gnode, normal, length, coord)
     j = cs%m
-    e0 = cs%nent + 1
     cs%nent = cs%nent + n
     cs%row_ptr(j + 1) = cs%nent + 1
     if (cs%entry_dirs) then
       call vector_sums(cs, j, x, du)
       return
     end if
-    tangent = [normal(2), -normal(1)]
-    gap = 0.0_wp
-    slip = 0.0_wp
-    do e = e0, cs%nent
-      p = cs%ent_node(e)
-      gap = gap + cs%ent_w(e)*dot_product(x(:, p), normal)
-      slip = slip + cs%ent_w(e)*dot_product(du(:, p), tangent)
-    end do
-    cs%gap_w(j) = gap
-    cs%slip_w(j) = slip
+    call scalar_sums(cs, j, normal, x, du)
   end subroutine cs_close_row
 
   subroutine grow(cs, mcap, ecap)
