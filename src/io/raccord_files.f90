@@ -239,6 +239,7 @@ contains
     type(c_ptr) :: fp
     integer(c_int) :: rc
     integer :: k
+    logical :: failed
     dir = trim(folder)
     if (len(dir) == 0) dir = '.'
     if (present(takes_writes)) takes_writes = .false.
@@ -263,7 +264,11 @@ contains
     do k = 1, 64
       if (c_fwrite(block, 1_c_size_t, int(len(block), c_size_t), fp) /= int(len(block), c_size_t)) exit
     end do
-    if (k <= 64 .or. c_fflush(fp) /= 0) reason = 'writing in "' // dir // '" fails: ' // last_error_text() // &
+    ! (the flush only after all 64 writes took: two tests, since Fortran's
+    ! .or. need not evaluate, or skip, either operand)
+    failed = k <= 64
+    if (.not. failed) failed = c_fflush(fp) /= 0
+    if (failed) reason = 'writing in "' // dir // '" fails: ' // last_error_text() // &
       ' (full disk or quota?): free some space or write elsewhere (--output)'
     rc = c_fclose(fp)
     rc = c_unlink(c_path(probe))
