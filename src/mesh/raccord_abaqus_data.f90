@@ -7,11 +7,7 @@ submodule (raccord_abaqus_reader) raccord_abaqus_data
 contains
 
   !> A data line of the current block.
-  module subroutine take_data(sl, d, st, err)
-    type(source_line_t), intent(in) :: sl
-    type(mesh_draft_t), intent(inout) :: d
-    type(abaqus_state_t), intent(inout) :: st
-    type(error_t), intent(inout) :: err
+  module procedure take_data
     integer, allocatable :: f(:), l(:)
     integer :: nf, id, k, a
     integer :: conn(8)
@@ -70,7 +66,7 @@ contains
     case (BLK_SURFACE)
       call take_face(sl, d, st, f, l, nf, err)
     end select
-  end subroutine take_data
+  end procedure take_data
 
   !> "first, last[, step]" of a GENERATE set.
   subroutine take_generate(sl, d, st, f, l, nf, err)

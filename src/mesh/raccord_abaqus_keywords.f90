@@ -8,13 +8,7 @@ submodule (raccord_abaqus_reader) raccord_abaqus_keywords
 contains
 
   !> A keyword line opens a block (or includes a file).
-  recursive module subroutine take_keyword(sl, path, d, st, depth, err)
-    type(source_line_t), intent(in) :: sl
-    character(len=*), intent(in) :: path
-    type(mesh_draft_t), intent(inout) :: d
-    type(abaqus_state_t), intent(inout) :: st
-    integer, intent(in) :: depth
-    type(error_t), intent(inout) :: err
+  module procedure take_keyword
     integer, allocatable :: f(:), l(:)
     integer :: nf, k
     character(len=:), allocatable :: kw, at, name, typ, inc
@@ -210,7 +204,7 @@ contains
         st%ignored = st%ignored // st%keyword
       end if
     end select
-  end subroutine take_keyword
+  end procedure take_keyword
 
   !> raccord element type and node count of an Abaqus element type.
   pure subroutine element_type(typ, etype, nen, found)

@@ -7,12 +7,7 @@ submodule (raccord_abaqus_reader) raccord_abaqus_lines
 
 contains
 
-  recursive module subroutine read_inp_file(path, d, st, depth, err)
-    character(len=*), intent(in) :: path
-    type(mesh_draft_t), intent(inout) :: d
-    type(abaqus_state_t), intent(inout) :: st
-    integer, intent(in) :: depth
-    type(error_t), intent(inout) :: err
+  module procedure read_inp_file
     type(text_file_t) :: tf
     type(source_line_t) :: sl
     character(len=:), allocatable :: pending, buf, grown
@@ -73,7 +68,7 @@ contains
       if (err%failed()) exit lines
     end do lines
     call close_text_file(tf)
-  end subroutine read_inp_file
+  end procedure read_inp_file
 
   !> Next line that is neither blank nor a ** comment, left-adjusted and trimmed.
   subroutine next_raw_line(tf, text, eof, err)
