@@ -2,6 +2,7 @@
 !> 2.2, ASCII) and $PhysicalNames (the groups' names, each checked
 !> against the others).
 module raccord_gmsh_header
+  use raccord_kinds, only: wp
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
   use raccord_strings, only: str
   use raccord_int_map, only: map_init, map_insert, map_get, text_key
@@ -22,7 +23,8 @@ contains
     type(error_t), intent(inout) :: err
     character(len=:), allocatable :: line, v
     integer, allocatable :: f(:), l(:)
-    integer :: nf, ftype
+    integer :: nf, ftype, ios, k
+    real(wp) :: ver
     call next_data_line(tf, 'MeshFormat', 'the version line', 0, 0, line, f, l, nf, err)
     if (err%failed()) return
     if (nf < 3) then
@@ -31,9 +33,17 @@ contains
       return
     end if
     v = line(f(1):l(1))
-    if (v == '4.1') then
+    ! The version is a number (Gmsh writes 4.1 and 2.2; "4.10" and "2.20"
+    ! are the same versions): 4.1, or 2.x (2.0-2.2 share the element lines)
+    ver = -1.0_wp
+    if (verify(v, '0123456789.') == 0 .and. count([(v(k:k) == '.', k = 1, len(v))]) == 1 .and. &
+        len(v) <= 20) then
+      read (v, '(f20.0)', iostat=ios) ver
+      if (ios /= 0) ver = -1.0_wp
+    end if
+    if (abs(ver - 4.1_wp) < 1.0e-9_wp) then
       st%version = 41
-    else if (v(1:min(2, len(v))) == '2.') then
+    else if (ver >= 2.0_wp .and. ver < 3.0_wp) then
       st%version = 22
     else
       call raise_error(err, EXIT_INPUT, here(tf) // ': MSH version ' // v // ' is not read by raccord: ' // &

@@ -10,12 +10,14 @@
 !> in 2.2 each element line carries one physical tag, and an element in
 !> several groups is written once per group under a new id, so a repeat
 !> of an element (same nodes in the same order) is merged back into one.
-!> Sections raccord does not use ($Periodic, $NodeData, ...) are skipped.
+!> Sections raccord does not use ($NodeData, $Comments, ...) are skipped and
+!> named in the log; $Periodic (a constraint raccord cannot apply) warns.
 !> This module is the loop over the sections; the sections are read by
 !> raccord_gmsh_header (both versions), raccord_gmsh_v41 and
 !> raccord_gmsh_v22, on raccord_gmsh_state and raccord_gmsh_lines.
 module raccord_gmsh_reader
   use raccord_error, only: error_t, raise_error, EXIT_INPUT
+  use raccord_log, only: log_info, log_warn
   use raccord_strings, only: str
   use raccord_int_map, only: map_init
   use raccord_text_reader, only: text_file_t, open_text_file, close_text_file, read_line, here
@@ -48,6 +50,8 @@ contains
     call add_file(d, path, st%ifile)
     allocate(st%name_dim(0), st%name_tag(0), st%names(0), st%ent(3, 0))
     call map_init(st%seen_quads, 1024)
+    call map_init(st%element_line, 1024)
+    st%skipped = ''
 
     sections: do
       call read_line(tf, line, eof, err)
@@ -99,6 +103,17 @@ contains
           call raise_error(err, EXIT_INPUT, here(tf) // ': "' // t // '" closes no open section: ' // &
             'the file was edited or concatenated; re-export the mesh')
         else
+          if (t == '$Periodic') then
+            ! Gmsh's periodic node pairs: a constraint raccord has no way to apply
+            call log_warn('read_gmsh', here(tf) // ': the $Periodic section (periodic node pairs of ' // &
+              'Periodic Curve/Surface) is not applied: raccord has no periodic constraints, so the two ' // &
+              'sides move independently; tie them with the scene''s boundary conditions or remove the ' // &
+              'periodicity from the .geo')
+          else if (index(', ' // st%skipped // ',', ', ' // t(2:) // ',') == 0) then
+            ! named once in the log, however often the section comes
+            if (len(st%skipped) > 0) st%skipped = st%skipped // ', '
+            st%skipped = st%skipped // t(2:)
+          end if
           call skip_section(tf, t(2:), err)
         end if
       end select
@@ -113,5 +128,8 @@ contains
       call raise_error(err, EXIT_INPUT, path // ' has no $Nodes or no $Elements section (file ends at line ' // &
         str(tf%line_no) // '): the file is truncated or holds only geometry; mesh and save it again (gmsh -2)')
     end if
+    if (err%failed()) return
+    if (len(st%skipped) > 0) call log_info('read_gmsh', path // ': skipped sections that carry no mesh ' // &
+      'data raccord uses (results, comments, ...): ' // st%skipped)
   end subroutine read_gmsh
 end module raccord_gmsh_reader

@@ -43,6 +43,11 @@ module raccord_gmsh_state
     type(int_map_t) :: entity_line
     ! 2.2: repeats of one element for several physical groups
     type(int_map_t) :: seen_quads
+    !> every element id read so far (points, lines, quadrilaterals: one
+    !> numbering in a Gmsh file) -> the line that defined it
+    type(int_map_t) :: element_line
+    !> the sections skipped as carrying no mesh data, for the log
+    character(len=:), allocatable :: skipped
   end type gmsh_state_t
 
   type :: name_holder_t
@@ -51,14 +56,25 @@ module raccord_gmsh_state
 
 contains
 
-  !> Put one element into the draft and its physical groups.
-  subroutine take_element(tf, st, d, id, gtype, nodes, phys)
+  !> Put one element into the draft and its physical groups. Gmsh numbers
+  !> the points, lines and quadrilaterals of a file in one sequence (2.2
+  !> too: an element repeated for a second physical group takes a new id),
+  !> so an id met twice is refused here, whatever the two elements' types.
+  subroutine take_element(tf, st, d, id, gtype, nodes, phys, err)
     type(text_file_t), intent(in) :: tf
     type(gmsh_state_t), intent(inout) :: st
     type(mesh_draft_t), intent(inout) :: d
     integer, intent(in) :: id, gtype, nodes(:), phys(:)
+    type(error_t), intent(inout) :: err
     integer :: p, k, a, existing, target_id, ends(3)
     character(len=:), allocatable :: name
+    call map_insert(st%element_line, int(id, i8), tf%line_no, existing)
+    if (existing /= 0) then
+      call raise_error(err, EXIT_INPUT, here(tf) // ': duplicate element id ' // str(id) // &
+        ' (first defined at line ' // str(existing) // '): a Gmsh file numbers its points, lines and ' // &
+        'quadrilaterals in one sequence, each id once; the file was edited or concatenated: re-export the mesh')
+      return
+    end if
     select case (gtype)
     case (GMSH_QUAD4, GMSH_QUAD8)
       target_id = id

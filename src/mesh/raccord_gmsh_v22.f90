@@ -82,10 +82,11 @@ contains
       end do
       if (err%failed()) return
       if (phys /= 0) then
-        call take_element(tf, st, d, id, gtype, nodes(1:nn), [phys])
+        call take_element(tf, st, d, id, gtype, nodes(1:nn), [phys], err)
       else
-        call take_element(tf, st, d, id, gtype, nodes(1:nn), [integer ::])
+        call take_element(tf, st, d, id, gtype, nodes(1:nn), [integer ::], err)
       end if
+      if (err%failed()) return
     end do
     call expect_end(tf, 'Elements', err)
   end subroutine read_elements_22

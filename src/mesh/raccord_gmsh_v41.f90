@@ -198,7 +198,8 @@ contains
           call get_int(tf, line, f, l, 1 + a, 'node tag', nodes(a), err)
         end do
         if (err%failed()) return
-        call take_element(tf, st, d, id, gtype, nodes(1:nn), phys)
+        call take_element(tf, st, d, id, gtype, nodes(1:nn), phys, err)
+        if (err%failed()) return
       end do
       nread = nread + n
     end do

@@ -56,7 +56,7 @@
 #   (resnames, subscript, logical, stepfix, deckend, deckenc, nullval) and
 #   make_cases_tags.sh (ids, entities, slowtext) and make_cases_rules.sh
 #   (thickness, brokenlink, setrange, endpart) and make_cases_text.sh
-#   (control, abqparam, extent, h5input).
+#   (control, abqparam, extent, h5input, gmshsec).
 set -u
 LC_ALL=C
 export LC_ALL

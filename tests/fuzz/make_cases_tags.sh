@@ -10,7 +10,9 @@
 #            the "no node" of a surface edge's middle), or refused by a
 #            later check that named a set or an edge instead; ids of
 #            2^31 and more were "not an integer": refused at the line
-#            naming the id, or the integer range                       2
+#            naming the id, or the integer range. A Gmsh element id
+#            used twice across types (a quadrilateral with a line's or a
+#            point's id) was accepted: refused at its second line      2
 #   entities a Gmsh 4.1 element block on an entity that $Entities does not
 #            define, on an entity of another dimension than its elements
 #            (quadrilaterals on a curve, lines on a surface), a file
@@ -56,6 +58,16 @@ ids_case node-id-negative plate_q8.msh "node 1 renamed -1 (in \$Nodes and every 
    $1 == 14 && $2 == 16 { $6 = -1 } { print }'
 ids_case element-id-0 plate_q8.msh "element 14 renamed 0" "element id 0 is not positive" \
   '$1 == 14 && $2 == 16 { $1 = 0 } { print }'
+# An element id used twice across types (a quadrilateral taking the id of
+# a line or a point element): Gmsh numbers all elements of a file in one
+# sequence; accepted before (the line's id is not kept), now refused at
+# the second line
+ids_case element-id-of-line plate.msh "quadrilateral 14 renamed 2 (the tag of a line element)" "duplicate element id 2" \
+  '$0 == "14 1 5 12 4 " { $0 = "2 1 5 12 4 " } { print }'
+ids_case element-id-of-point plate_q8.msh "quadrilateral 14 renamed 1 (the id of the point element)" "duplicate element id 1" \
+  '$1 == 14 && $2 == 16 { $1 = 1 } { print }'
+ids_case line-id-of-line plate_q8.msh "line element 13 renamed 2 (another line's id)" "duplicate element id 2" \
+  '$0 == "13 8 2 2 4 4 1 24" { $0 = "2 8 2 2 4 4 1 24" } { print }'
 # plate.inp: node 1 is in element 1 and the set left ("1, 5")
 ids_case node-0 plate.inp "node 1 renamed 0 (in element 1 and the set left)" "node id 0 is not positive" \
   '$0 == "1, 0., 0." { $0 = "0, 0., 0." } $0 == "1, 1, 2, 6, 5" { $0 = "1, 0, 2, 6, 5" } $0 == "1, 5" { $0 = "0, 5" } { print }'

@@ -31,6 +31,12 @@
 #            symbolic link, --verify of a folder or a broken link: "not
 #            an HDF5 file, or truncated or damaged", "no checkpoint";
 #            refused as a folder or as a broken link with its target    2
+#   gmshsec  the $MeshFormat version written 4.10 or 2.20 (the numbers
+#            4.1 and 2.2: 4.10 was refused), 4.0 or 2*4.1 (refused,
+#            naming the version); $NodeData and $Periodic sections,
+#            skipped without a word before: run, the log names the
+#            skipped sections and $Periodic warns (its node pairs are
+#            not applied)                                         2, valid
 
 # ---------------------------------------------------------------- control
 # control_case NAME FILE KIND EXPECT NOTE AWK [NAMES]: FILE of its seed pair
@@ -147,3 +153,23 @@ new_case h5input.verify-brokenlink h5input bad 2 "--verify run.h5, a link to old
 ln -s old/run.h5 "$c/run.h5"
 set_args --verify run.h5
 set_names "broken symbolic link"
+
+# ---------------------------------------------------------------- gmshsec
+# gmsh_case NAME MESH KIND EXPECT NOTE AWK [NAMES]
+gmsh_case() {
+  new_case "gmshsec.$2.$1" gmshsec "$3" "$4" "$2: $5"
+  d=$(seed_pair "$2")
+  edit_lines "$c/$2" "$6"
+  set_args -o out "$d"
+  [ -z "${7:-}" ] || set_names "$7"
+}
+gmsh_case version-4.10 plate.msh valid 0 "the version written 4.10 (the number 4.1)" \
+  'NR == 2 { sub(/^4\.1 /, "4.10 ") } { print }'
+gmsh_case version-2.20 plate_q8.msh valid 0 "the version written 2.20 (the number 2.2)" \
+  'NR == 2 { sub(/^2\.2 /, "2.20 ") } { print }'
+gmsh_case version-4.0 plate.msh bad 2 "the version written 4.0 (MSH 4.0, whose sections differ)" \
+  'NR == 2 { sub(/^4\.1 /, "4.0 ") } { print }' "MSH version 4.0"
+gmsh_case version-repeat plate.msh bad 2 "the version written 2*4.1 (a Fortran repeat count, no number)" \
+  'NR == 2 { sub(/^4\.1 /, "2*4.1 ") } { print }' "MSH version 2*4.1"
+gmsh_case periodic-nodedata plate_q8.msh valid 0 "\$NodeData and an empty \$Periodic after \$Elements (skipped; the log names them, \$Periodic warns)" \
+  '{ print } /^\$EndElements/ { print "$NodeData"; print "1"; print "\"u\""; print "1"; print "0"; print "3"; print "0"; print "1"; print "1"; print "1 0"; print "$EndNodeData"; print "$Periodic"; print "0"; print "$EndPeriodic" }'
