@@ -48,7 +48,12 @@ contains
     type(elastic_block_t), intent(in) :: blk
     integer, intent(in) :: e, g
     real(wp) :: jac(2, 2), xe(2, max_nen)
-    xe(:, 1:blk%nen) = blk%xn(:, blk%conn(:, e))
+    integer :: a
+    ! node by node (a vector-subscript section made a heap temporary at
+    ! each call: two per Gauss point of a Q8 element in a frame's stress)
+    do a = 1, blk%nen
+      xe(:, a) = blk%xn(:, blk%conn(a, e))
+    end do
     jac = matmul(xe(:, 1:blk%nen), transpose(blk%dnref(:, :, g)))
   end function q8_jacobian
 
@@ -229,18 +234,48 @@ contains
     if (blk%nel > 0) w2 = maxval(w2e)
   end procedure max_eigenvalue_bound
 
-  !> The nodal stress contributions of element e (add_nodal_stress).
-  module procedure add_element_stress
-    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs, sa(4)
-    integer :: g, a, nen
-    nen = blk%nen
-    ! node by node: the gather u(:, blk%conn(:, e)) and the product
-    ! matmul(sg(:, 1:ngp), blk%extrap(a, :)) below each made a heap
-    ! temporary per element (five malloc calls of a Q4 element, 1.2
-    ! million over the five frames of Fig. 2(a)); same sums, same order
-    do a = 1, nen
+  !> The displacements of element e's nodes, node by node: the section
+  !> u(:, blk%conn(:, e)) made a heap temporary per element and frame.
+  pure subroutine gather_element(blk, e, u, ue)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e
+    real(wp), intent(in) :: u(:,:)
+    real(wp), intent(out) :: ue(2, max_nen)
+    integer :: a
+    do a = 1, blk%nen
       ue(:, a) = u(:, blk%conn(a, e))
     end do
+  end subroutine gather_element
+
+  !> The Gauss-point values sg of element e extrapolated to its nodes
+  !> (blk%extrap, theory eq. 7.1) and added to the nodal sums s, one count
+  !> per node in wsum (add_nodal_stress averages them). Point by point, in
+  !> the order matmul(sg(:, 1:ngp), blk%extrap(a, :)) summed, which made a
+  !> heap temporary per node (1.2 million over Fig. 2(a)'s five frames).
+  pure subroutine add_extrapolated(blk, e, sg, s, wsum)
+    type(elastic_block_t), intent(in) :: blk
+    integer, intent(in) :: e
+    real(wp), intent(in) :: sg(4, max_gp)
+    real(wp), intent(inout) :: s(:,:), wsum(:)
+    real(wp) :: sa(4)
+    integer :: a, g, node
+    do a = 1, blk%nen
+      node = blk%conn(a, e)
+      sa = 0.0_wp
+      do g = 1, blk%ngp
+        sa = sa + sg(:, g)*blk%extrap(a, g)
+      end do
+      s(:, node) = s(:, node) + sa
+      wsum(node) = wsum(node) + 1.0_wp
+    end do
+  end subroutine add_extrapolated
+
+  !> The nodal stress contributions of element e (add_nodal_stress).
+  module procedure add_element_stress
+    real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), tr, rs
+    integer :: g, nen
+    nen = blk%nen
+    call gather_element(blk, e, u, ue)
     do g = 1, blk%ngp
       call scaled_gradients(blk, e, g, gr)
       rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
@@ -256,14 +291,7 @@ contains
         sg(4, g) = blk%poisson*(sg(1, g) + sg(2, g))
       end if
     end do
-    do a = 1, nen
-      sa = 0.0_wp
-      do g = 1, blk%ngp
-        sa = sa + sg(:, g)*blk%extrap(a, g)
-      end do
-      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + sa
-      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
-    end do
+    call add_extrapolated(blk, e, sg, s, wsum)
   end procedure add_element_stress
 
   !> The nodal contributions of finite-strain element e (add_nodal_stress):
@@ -273,9 +301,9 @@ contains
   module procedure add_element_finite
     real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), rs, f(4, max_gp), detf(max_gp)
     real(wp) :: tau(4), tau33, jbar, vsum, cg, p
-    integer :: g, a, nen
+    integer :: g, nen
     nen = blk%nen
-    ue(:, 1:nen) = u(:, blk%conn(:, e))
+    call gather_element(blk, e, u, ue)
     jbar = 0.0_wp
     vsum = 0.0_wp
     do g = 1, blk%ngp
@@ -312,19 +340,16 @@ contains
       end if
       sg(:, g) = cauchy_from_tau(detf(g), tau, tau33)
     end do
-    do a = 1, nen
-      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
-      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
-    end do
+    call add_extrapolated(blk, e, sg, s, wsum)
   end procedure add_element_finite
 
   !> The nodal small strain (exx, eyy, exy, ezz) of small-strain element e;
   !> ezz = -nu/(1-nu) (exx + eyy) in plane stress, 0 in plane strain.
   module procedure add_element_small_strain
     real(wp) :: gr(2, max_nen), sg(4, max_gp), ue(2, max_nen), gu(2, 2), rs
-    integer :: g, a, nen
+    integer :: g, nen
     nen = blk%nen
-    ue(:, 1:nen) = u(:, blk%conn(:, e))
+    call gather_element(blk, e, u, ue)
     do g = 1, blk%ngp
       call scaled_gradients(blk, e, g, gr)
       rs = 1.0_wp/sqrt(gauss_c(blk, e, g))
@@ -335,10 +360,7 @@ contains
       sg(4, g) = 0.0_wp
       if (blk%plane_stress) sg(4, g) = -blk%poisson/(1.0_wp - blk%poisson)*(gu(1, 1) + gu(2, 2))
     end do
-    do a = 1, nen
-      s(:, blk%conn(a, e)) = s(:, blk%conn(a, e)) + matmul(sg(:, 1:blk%ngp), blk%extrap(a, :))
-      wsum(blk%conn(a, e)) = wsum(blk%conn(a, e)) + 1.0_wp
-    end do
+    call add_extrapolated(blk, e, sg, s, wsum)
   end procedure add_element_small_strain
 
   !> H = sqrt(c) J^-1 and c = w detJ thickness at every Gauss point of a Q8

@@ -165,7 +165,7 @@ contains
   module procedure add_group_j2_stress
     real(wp) :: ue(chunk_len, 2, max_nen), fe(chunk_len, 2, max_nen), sgp(chunk_len, 4, max_gp)
     real(wp) :: hist(chunk_len, nhist, max_gp), act(chunk_len), en, dis, jm, w2
-    integer :: ic, e0, nc, i, a, node, jel, ngp
+    integer :: ic, e0, nc, i, a, g, node, jel, ngp
     logical :: virgin
     ngp = blk%ngp
     do ic = (grp - 1)*blk%group_len + 1, min(grp*blk%group_len, blk%nchunk)
@@ -180,22 +180,17 @@ contains
       hist(:, :, 1:ngp) = plastic%h(:, :, :, ic)
       virgin = plastic%virgin(ic)
       call j2_chunk(blk, ic, nc, .false., hist, virgin, ue, fe, sgp, act, en, dis, jm, jel, w2)
-      ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp)
-      call extrapolate(reshape(sgp(:, :, 1:ngp), [chunk_len, 4, ngp]))
-    end do
-  contains
-    subroutine extrapolate(sg)
-      real(wp), intent(in) :: sg(:,:,:)
-      integer :: ii, aa, gg
-      do ii = 1, nc
-        do aa = 1, blk%nen
-          node = blk%conn(aa, e0 + ii)
-          do gg = 1, ngp
-            s(:, node) = s(:, node) + blk%extrap(aa, gg)*sg(ii, :, gg)
+      ! sgp holds the points in the kernel's layout (chunk_len, 4, ngp),
+      ! read in place (a reshaped copy made a heap temporary per chunk)
+      do i = 1, nc
+        do a = 1, blk%nen
+          node = blk%conn(a, e0 + i)
+          do g = 1, ngp
+            s(:, node) = s(:, node) + blk%extrap(a, g)*sgp(i, :, g)
           end do
           wsum(node) = wsum(node) + 1.0_wp
         end do
       end do
-    end subroutine extrapolate
+    end do
   end procedure add_group_j2_stress
 end submodule raccord_elastic_block_plastic
