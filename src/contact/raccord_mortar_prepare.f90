@@ -26,7 +26,7 @@ contains
     type(verlet_t), intent(in) :: v
     type(mortar_work_t), intent(inout) :: w
     integer :: k, a, nen, ncand, l, t, tn, nc
-    real(wp) :: lo(2), hi(2), tm(2)
+    real(wp) :: lo(2), hi(2), tm(2), p1(2), p2(2)
     nen = slave%nen_seg
     ! Pass 1: the candidates of every near segment (the current boxes),
     ! kept in w%cbuf; the segments with candidates ("active") are the only
@@ -49,13 +49,21 @@ contains
       call clear_segment(w, k)
       w%mbeg(k) = 1
       w%mend(k) = 0
-      ! The box of the segment's nodes (load_segment's values).
-      lo = x(:, slave%seg(1, k))
-      hi = lo
-      do a = 2, nen
-        lo = min(lo, x(:, slave%seg(a, k)))
-        hi = max(hi, x(:, slave%seg(a, k)))
-      end do
+      ! The box of the segment's nodes (load_segment's values); a 2-node
+      ! segment's without the loop (the same min and max of its two nodes).
+      if (nen == 2) then
+        p1 = x(:, slave%seg(1, k))
+        p2 = x(:, slave%seg(2, k))
+        lo = min(p1, p2)
+        hi = max(p1, p2)
+      else
+        lo = x(:, slave%seg(1, k))
+        hi = lo
+        do a = 2, nen
+          lo = min(lo, x(:, slave%seg(a, k)))
+          hi = max(hi, x(:, slave%seg(a, k)))
+        end do
+      end if
       ! Candidates: the listed master segments whose inflated box meets
       ! the slave segment's box now (the test of the full search).
       call verlet_candidates(v, k, lo, hi, w%cbuf(nc + 1:), ncand)
