@@ -196,7 +196,8 @@ contains
   !> where a library call costs more than its arithmetic). rb holds the
   !> lower band, rb(d + 1, k) = R(k + d, k), and returns L in its place.
   !> info = j > 0 when the j-th pivot is not above CHOL_TOL of R(j, j)
-  !> (R singular or not positive definite to working precision).
+  !> (R singular or not positive definite to working precision; b is then
+  !> left partly transformed).
   pure subroutine band_cholesky_solve(n, kr, rb, b, info)
     integer, intent(in) :: n, kr
     real(wp), intent(inout) :: rb(:,:)        !< (>= kr + 1, >= n)
@@ -216,6 +217,16 @@ contains
       end if
       s = sqrt(s)
       rb(1, j) = s
+      ! L y = b, row j, as soon as row j of L is complete (L(j, k), k <= j:
+      ! the columns before and this pivot): the same operations in the same
+      ! order as a forward pass after the factorisation, but its chain of
+      ! dependent divisions now overlaps the factorisation's chain of
+      ! square roots and divisions (issue #16, ninth pass).
+      t = b(j)
+      do k = max(1, j - kr), j - 1
+        t = t - rb(j - k + 1, k)*b(k)
+      end do
+      b(j) = t/s
       do i = j + 1, min(n, j + kr)
         t = rb(i - j + 1, j)
         do k = max(1, i - kr), j - 1
@@ -224,14 +235,7 @@ contains
         rb(i - j + 1, j) = t/s
       end do
     end do
-    ! L y = b, then L' x = y.
-    do j = 1, n
-      t = b(j)
-      do k = max(1, j - kr), j - 1
-        t = t - rb(j - k + 1, k)*b(k)
-      end do
-      b(j) = t/rb(1, j)
-    end do
+    ! L' x = y.
     do j = n, 1, -1
       t = b(j)
       do i = j + 1, min(n, j + kr)

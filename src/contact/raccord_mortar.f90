@@ -161,10 +161,14 @@ contains
             fhi = (pc(1) - xs(1, 2))*nn(2, 2) - (pc(2) - xs(2, 2))*nn(1, 2)
             w%f_seg(c) = k
             w%f_end(c) = fhi
-            if (flo /= 0.0_wp .and. fhi /= 0.0_wp .and. sign(1.0_wp, flo) == sign(1.0_wp, fhi)) then
+            ! (flo, fhi finite: x passed the state guard, nn are unit.)
+            if ((flo > 0.0_wp .and. fhi > 0.0_wp) .or. (flo < 0.0_wp .and. fhi < 0.0_wp)) then
               ! No root inside: past the end root_along_field picks (the same
               ! test, written out; most corners of the candidates are such).
-              xi = merge(1.0_wp, -1.0_wp, sign(1.0_wp, flo) == tsgn)
+              ! Both nonzero and of one sign, as sign(1, flo) == sign(1, fhi)
+              ! with both /= 0 tested; tsgn is +1 or -1 (ninth pass: the
+              ! sign() form took two more compares and the bit masks).
+              xi = merge(1.0_wp, -1.0_wp, (flo > 0.0_wp) .eqv. (tsgn > 0.0_wp))
             else
               xi = root_along_field(nen, xs, nn, pc, flo, fhi)
             end if
@@ -471,10 +475,13 @@ contains
     end do pieces
     w%g1loc(1:2, 1:2, k) = g1
     w%nmloc(:, 1:2, k) = nml
+    ! Room for the overlap's (at most four) entries, checked once.
+    do while (w%nment + 4 > size(w%ment_node))
+      call grow_entries(w)
+    end do
     do b = 1, 2
       do a = 1, 2
         if (mloc(a, b) == 0.0_wp) cycle
-        if (w%nment == size(w%ment_node)) call grow_entries(w)
         w%nment = w%nment + 1
         w%ment_node(w%nment) = master%seg(a, l)
         w%ment_loc(w%nment) = b

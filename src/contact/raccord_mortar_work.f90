@@ -73,14 +73,19 @@ module raccord_mortar_work
     integer, allocatable :: cidx(:)           !< (nnode) constraint index, 0 if none
     integer, allocatable :: mbeg(:), mend(:)  !< (nseg) each slave segment's master entries (empty: mbeg > mend)
     integer, allocatable :: stamp(:)          !< (nnode) last step a node's normal was taken at
-    integer, allocatable :: nlist(:)          !< (nnode) scratch: the nodes whose normals are taken
+    integer, allocatable :: nlist(:)          !< (nnode) the nodes whose normals are taken
     integer :: nstep = 0
     integer, allocatable :: sstamp(:)         !< (nseg) last step snrm was taken at (2-node segments)
     real(wp), allocatable :: snrm(:,:)        !< (2, nseg) outward unit normal of each straight segment
     real(wp), allocatable :: slen(:)          !< (nseg) |dx_s/dxi| of each straight segment (half its length)
     real(wp), allocatable :: mnu(:,:)         !< (2, master nseg) inward unit normal of each listed straight
                                               !< master segment, taken once per step (build_mortar)
-    integer, allocatable :: slist(:)          !< (nseg) scratch: the segments whose snrm is taken
+    integer, allocatable :: slist(:)          !< (nseg) the segments whose snrm is taken
+    ! slist(1:nsl) and nlist(1:nl) are functions of the segments
+    ! slave_normals was given (kept(1:nkept)) and the fixed adjacency:
+    ! kept while the step gives the same segments (raccord_mortar_prepare).
+    integer :: nsl = 0, nl = 0, nkept = -1
+    integer, allocatable :: kept(:)           !< (nseg) the segments the lists were built for
     integer :: nment = 0
     integer, allocatable :: ment_node(:), ment_loc(:)   !< master node, psi local index
     real(wp), allocatable :: ment_w(:)                  !< G21 contribution
@@ -138,7 +143,7 @@ contains
     allocate(w%nlist(nn))
     allocate(w%snrm(2, ns), w%slen(ns), source=0.0_wp)
     allocate(w%mnu(2, master%nseg), source=0.0_wp)
-    allocate(w%slist(ns))
+    allocate(w%slist(ns), w%kept(ns))
     allocate(w%ment_node(16*ns), w%ment_loc(16*ns), w%ment_w(16*ns))
     allocate(w%act(ns), w%cbeg(ns), w%cend(ns), w%nrmseg(ns))
     allocate(w%cbuf(max(16, 4*ns)))
