@@ -37,6 +37,11 @@
 !> |tau_j| <= mu lambda_j, ...): the nodal gap G1^-T g_w mixes the open
 !> neighbours' gaps into a closed node's, and with rows frozen per step
 !> that gave the bodies energy (doc/theory-contact.md, section 7).
+!> With cs%tcorners (mortar on a Q8 slave, edge_multipliers =
+!> 'tangential_corners') the tangential unknowns are tau = T tau_c, the
+!> corner space's, and the tangential conditions are tested with T'
+!> (raccord_saddle_form, solve_saddle_tc; doc/reproduction.md, "The Q8
+!> stick zigzag: tangential corner multipliers"); the normal ones are (19).
 !> Degrees of freedom with prescribed motion have M^-1 = 0: infinitely
 !> massive, they take no correction.
 !>
