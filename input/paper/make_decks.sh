@@ -18,6 +18,7 @@ ALPHA=2.5e7     # mass-proportional damping of the block, about 2 omega_1 of the
 # Fig. 3). There the disc gets 2 omega_1 of its own lowest mode (period
 # about 1.3e-6 s: 1.0e7 1/s), a drag of 530 N/mm at most, about 0 at t = T.
 DISC_ALPHA=
+PAIRX=          # extra &contact_pair keys of the next decks (Fig. 4(b))
 T2=$(awk "BEGIN { printf \"%.1e\", 2*$T }")   # end of the cycle
 # The cycle 0 -> 1 -> 0 follows (1 - cos(pi t/T))/2 sampled at 41 points:
 # zero velocity at the start, at maximum indentation and at the end, so the
@@ -120,7 +121,7 @@ deck() {
 /
 &contact_pair
   slave = '$4', master = '$5'
-  method = '$6', multiplier = '$7', friction = $8
+  method = '$6', multiplier = '$7', friction = $8$PAIRX
 /
 EOD
   echo "$1.nml"
@@ -153,9 +154,15 @@ deck cycle_mortar_p1_mu020 $F "the load cycle, mortar P1, mu = 0.2, slave = bloc
 # Fig. 4(a): Q4 against Q8 with the same interface node spacing, mortar P1, frictionless
 deck fig4a_q4_mortar_p1 paper_q4.msh "Fig. 4(a), Q4, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
 deck fig4a_q8_mortar_p1 paper_q8.msh "Fig. 4(a), Q8, mortar P1, slave = block top" block_top disc_arc mortar P1 0.0
-# Fig. 4(b): Q8, mortar P0 and P1, mu = 0.2
+# Fig. 4(b): Q8, mortar P0 and P1, mu = 0.2, the tangential multipliers at
+# the corners of the Q8 edges only (with one on every trace node the stick
+# traction zigzags by 13 % of its peak from node to node: doc/reproduction.md,
+# "The Q8 stick zigzag: tangential corner multipliers")
+PAIRX="
+  edge_multipliers = 'tangential_corners'"
 deck fig4b_q8_mortar_p0_mu020 paper_q8.msh "Fig. 4(b), Q8, mortar P0, mu = 0.2, slave = block top" block_top disc_arc mortar P0 0.2
 deck fig4b_q8_mortar_p1_mu020 paper_q8.msh "Fig. 4(b), Q8, mortar P1, mu = 0.2, slave = block top" block_top disc_arc mortar P1 0.2
+PAIRX=
 # Regression: the coarse mesh, a few seconds each
 C=paper_q4_coarse.msh
 deck reg_nts_slave_block       $C "regression, coarse, node-to-segment, slave = block top" block_top disc_arc node_to_segment P1 0.0

@@ -211,6 +211,10 @@ contains
         s = 'mortar matching, P1 multipliers (linear over each quadratic slave edge, at its corners)'
       end select
     end if
+    ! edge_multipliers = 'tangential_corners' (doc/reproduction.md, "The Q8
+    ! stick zigzag: tangential corner multipliers")
+    if (pair%mortar%tcorners .and. pair%slave%nen_seg == 3) s = s // &
+      ', the tangential ones at the corners of each quadratic slave edge only'
     if (pair%weighted) s = s // ', rows along the master''s normal, conditions on each weighted gap'
   end function matching_text
 

@@ -56,6 +56,15 @@ module raccord_constraint_set
     real(wp), allocatable :: slip_w(:)        !< weighted slip of the predicted increment
     real(wp), allocatable :: length(:)        !< length the multiplier acts on (for stresses)
     real(wp), allocatable :: coord(:)         !< reference arc length of the node (for profiles)
+    !> Tangential corner multipliers (mortar on 3-node slave edges, chosen
+    !> once per pair; set by raccord_mortar_rows): tau = T tau_c, a mid
+    !> row's tau the mean of its corners' (tcor(:, j), 0: no row), the
+    !> tangential conditions tested with T' (an owner row j and the mid
+    !> rows tmid(:, j) that take half of its value). tcor(1, j) < 0: row j
+    !> owns its tangential unknown.
+    logical :: tcorners = .false.
+    integer, allocatable :: tcor(:,:)         !< (2, m) mid row: the rows of its corners
+    integer, allocatable :: tmid(:,:)         !< (2, m) owner row: the mid rows that take half its value
   end type constraint_set_t
 
   public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row, cs_reserve, cs_close_row

@@ -167,6 +167,18 @@ contains
         ! still gives energy (doc/reproduction.md, "The Q8 stick zigzag:
         ! per-entry directions"). Default: every trace node.
         pair%mortar%corners = spec%corners
+        ! Tangential corner multipliers (edge_multipliers =
+        ! 'tangential_corners'): the corner space for the tangential
+        ! conditions only, which removes the zigzag and leaves the normal
+        ! conditions those of the default (doc/reproduction.md, "The Q8
+        ! stick zigzag: tangential corner multipliers").
+        pair%mortar%tcorners = spec%tcorners .and. spec%friction > 0.0_wp
+        if (spec%tcorners .and. pair%slave%nen_seg /= 3) call log_warn('contact', where // &
+          ': edge_multipliers = ''tangential_corners'' has no effect on a slave of 2-node edges (Q4), whose ' // &
+          'multipliers sit at the corners already')
+        if (spec%tcorners .and. spec%friction <= 0.0_wp) call log_warn('contact', where // &
+          ': edge_multipliers = ''tangential_corners'' has no effect without friction (it places the ' // &
+          'tangential multipliers only)')
         if (spec%corners .and. pair%slave%nen_seg /= 3) call log_warn('contact', where // &
           ': edge_multipliers = ''corners'' has no effect on a slave of 2-node edges (Q4), whose multipliers ' // &
           'sit at the corners already')

@@ -225,7 +225,41 @@ contains
       call corner_rows_after(c)
     end do
     cs%g1_band = band
+    cs%tcorners = w%tcorners .and. nen == 3 .and. .not. w%corners
+    if (cs%tcorners) call tangential_map()
   contains
+    !> Tangential corner multipliers: for each mid row the rows of its
+    !> edge's two corners (cs%tcor; 0 where a corner has no row), for each
+    !> corner row the mid rows that take half of its value (cs%tmid); every
+    !> other row (corners, master corner rows) owns its tangential unknown
+    !> (tcor(1, j) = -1). Grow-only storage.
+    subroutine tangential_map()
+      integer :: jm, s, a, tt, kk
+      if (allocated(cs%tcor)) then
+        if (size(cs%tcor, 2) < size(cs%snode)) deallocate(cs%tcor, cs%tmid)
+      end if
+      if (.not. allocated(cs%tcor)) allocate(cs%tcor(2, size(cs%snode)), cs%tmid(2, size(cs%snode)))
+      cs%tcor(1, 1:cs%m) = -1
+      cs%tcor(2, 1:cs%m) = 0
+      cs%tmid(:, 1:cs%m) = 0
+      do tt = 1, vl%nnear
+        kk = vl%near(tt)
+        jm = w%cidx(w%pos(3, kk))
+        if (jm <= 0) cycle
+        cs%tcor(1, jm) = w%cidx(w%pos(1, kk))
+        cs%tcor(2, jm) = w%cidx(w%pos(2, kk))
+        do s = 1, 2
+          a = cs%tcor(s, jm)
+          if (a <= 0) cycle
+          if (cs%tmid(1, a) == 0) then
+            cs%tmid(1, a) = jm
+          else
+            cs%tmid(2, a) = jm
+          end if
+        end do
+      end do
+    end subroutine tangential_map
+
     !> Chain position of the q-th node in constraint order: along the
     !> chain from cfirst, or folded (the chain's q-th node from the start
     !> for odd q, from the end for even q).

@@ -42,6 +42,10 @@ module raccord_mortar_work
     !> &contact_pair edge_multipliers = 'corners', opt-in: doc/theory-contact-mortar.md
     !> section 1); otherwise one on every trace node
     logical :: corners = .false.
+    !> 3-node slave edges, multipliers on every trace node: the tangential
+    !> multipliers and conditions on the corners only (raccord_mortar_rows
+    !> writes the map into the constraint set; issue #16 item 3)
+    logical :: tcorners = .false.
     !> With `corners` (3-node slave edges): each row entry carries its own
     !> direction, W_ij = int N_i psi_j nu dGamma (g1vec, ment_v), the exact
     !> first variation of the weighted gap on a curved surface instead of

@@ -37,6 +37,11 @@
 !> |tau_j| <= mu lambda_j, ...): the nodal gap G1^-T g_w mixes the open
 !> neighbours' gaps into a closed node's, and with rows frozen per step
 !> that gave the bodies energy (doc/theory-contact.md, section 7).
+!> With cs%tcorners (mortar on a Q8 slave, edge_multipliers =
+!> 'tangential_corners') the tangential unknowns are tau = T tau_c, the
+!> corner space's, and the tangential conditions are tested with T'
+!> (raccord_saddle_form, solve_saddle_tc; doc/reproduction.md, "The Q8
+!> stick zigzag: tangential corner multipliers"); the normal ones are (19).
 !> Degrees of freedom with prescribed motion have M^-1 = 0: infinitely
 !> massive, they take no correction.
 !>
@@ -55,7 +60,7 @@ module raccord_multiplier_solver
   use raccord_frictionless_form, only: solve_frictionless
   use raccord_nts_friction_form, only: solve_diagonal_friction
   use raccord_banded_friction_form, only: solve_banded_friction
-  use raccord_saddle_form, only: solve_saddle
+  use raccord_saddle_form, only: solve_saddle, solve_saddle_tc
   implicit none
   private
 
@@ -118,7 +123,12 @@ contains
     ! The Delassus forms (below) first, the saddle form if they decline.
     ! They are written for the paper's conditions (19); weighted conditions
     ! (cs%weighted: G1 the identity in the conditions) take the saddle form.
-    if (w%saddle_only) then
+    if (friction .and. cs%tcorners) then
+      ! tangential corner multipliers: their own saddle form
+      call solve_saddle_tc(cs, dt, mu, bw, max_iter, w, same)
+      call finish_solve(cs, mu, friction, same, w, status, sigma)
+      return
+    else if (w%saddle_only) then
       continue
     else if (.not. friction .and. .not. cs%weighted) then
       call solve_frictionless(cs, dt, max_iter, w, same, info)

@@ -18,7 +18,7 @@ module raccord_solver_conditions
   !> (least_index_change; saddle form and banded friction form).
   integer, parameter, public :: LEAST_INDEX_AFTER = 30
   public :: least_index_change, update_sets, condition_residual, band_matvec, g1_at, g1c
-  public :: holds_to_roundoff
+  public :: holds_to_roundoff, tested_sum
 
 contains
 
@@ -176,11 +176,30 @@ contains
         if (w%c(j) > 0.0_wp) r = max(r, -g/lscale, abs(fc)/fscale)
       else
         r = max(r, abs(g)/lscale, -fc/fscale)
-        if (friction) r = max(r, (abs(tc) - mu*fc)/fscale)
+        if (friction .and. .not. cs%tcorners) r = max(r, (abs(tc) - mu*fc)/fscale)
+      end if
+      ! tangential corner multipliers: the Coulomb bound of each owner on
+      ! its tested forces (raccord_saddle_form, solve_saddle_tc)
+      if (friction .and. cs%tcorners) then
+        if (cs%tcor(1, j) < 0) r = max(r, (abs(tested_sum(cs, w%ft, j)) - &
+          mu*max(tested_sum(cs, w%fn, j), 0.0_wp))/fscale)
       end if
     end do
     r = max(r, 0.0_wp)
   end function condition_residual
+
+  !> (T' v)_j for an owner row j of tangential corner multipliers
+  !> (cs%tcorners): v_j plus half of v on each mid row that takes its value.
+  pure real(wp) function tested_sum(cs, v, j) result(t)
+    type(constraint_set_t), intent(in) :: cs
+    real(wp), intent(in) :: v(:)
+    integer, intent(in) :: j
+    integer :: s
+    t = v(j)
+    do s = 1, 2
+      if (cs%tmid(s, j) > 0) t = t + 0.5_wp*v(cs%tmid(s, j))
+    end do
+  end function tested_sum
 
   !> The shortest length a multiplier acts on, the scale of the gaps in
   !> condition_residual; a row of zero length (an axisymmetric node on the

@@ -16,6 +16,11 @@ module raccord_solver_work
   type, public :: solver_work_t
     real(wp), allocatable :: lam(:), tau(:), gn(:), gt(:), fn(:), ft(:), c(:)
     integer, allocatable :: status(:), status_old(:)
+    !> Tangential corner multipliers (cs%tcorners): the stick / slip set of
+    !> each owner row apart from the normal set, and its c of the
+    !> tangential test (raccord_saddle_form, solve_saddle_tc)
+    integer, allocatable :: tstat(:), tstat_old(:)
+    real(wp), allocatable :: ct(:)
     real(wp), allocatable :: sigma(:)
     real(wp), allocatable :: knn(:,:), knt(:,:), ktn(:,:), ktt(:,:)   !< (-kb:kb, m)
     integer :: kb = 0

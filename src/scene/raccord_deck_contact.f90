@@ -169,12 +169,23 @@ contains
       spec%corners = .false.
     case ('corners')
       spec%corners = .true.
+    case ('tangential_corners')
+      spec%corners = .false.
+      spec%tcorners = .true.
     case default
       call bad_value(deck, blk, label, 'edge_multipliers', 'unknown choice of multiplier nodes on quadratic edges', &
-        'use ''all_nodes'' (a multiplier at every node of a Q8 slave edge, the default) or ''corners'' ' // &
-        '(at its corner nodes only; doc/scene-reference.md)', err)
+        'use ''all_nodes'' (a multiplier at every node of a Q8 slave edge, the default), ''corners'' ' // &
+        '(at its corner nodes only) or ''tangential_corners'' (the tangential ones at the corners only, ' // &
+        'the normal ones at every node; doc/scene-reference.md)', err)
       return
     end select
+    if (spec%tcorners .and. (spec%method == METHOD_NTS .or. spec%multiplier == MULT_DUAL .or. spec%weighted)) then
+      call bad_value(deck, blk, label, 'edge_multipliers', 'edge_multipliers = ''tangential_corners'' works with ' // &
+        'method = ''mortar'', multiplier = ''P1'' or ''P0'' and conditions = ''nodal''', &
+        'it changes the tangential multipliers of the paper''s conditions (19) on a Q8 slave only; remove the ' // &
+        'key or change the others', err)
+      return
+    end if
     if (spec%corners .and. spec%method == METHOD_NTS) then
       call bad_value(deck, blk, label, 'edge_multipliers', 'edge_multipliers = ''corners'' is a key of ' // &
         'method = ''mortar''', 'node-to-segment has a multiplier at every slave node; remove the key or use ' // &

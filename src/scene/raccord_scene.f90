@@ -122,6 +122,11 @@ module raccord_scene
     !> nodes only (edge_multipliers = 'corners') instead of on every trace
     !> node ('all_nodes', the default); doc/theory-contact-mortar.md, section 1
     logical :: corners = .false.
+    !> Mortar, Q8 slave, with friction: the tangential multipliers and
+    !> conditions on the corner nodes only, the normal ones on every trace
+    !> node (edge_multipliers = 'tangential_corners'; doc/reproduction.md,
+    !> "The Q8 stick zigzag: tangential corner multipliers")
+    logical :: tcorners = .false.
     real(wp) :: friction = 0.0_wp                   !< Coulomb coefficient mu; 0 = frictionless
     real(wp) :: search_distance = 0.0_wp            !< 0 = automatic (from the surface element sizes)
     !> relative residual of (19) at which the multiplier solve takes an

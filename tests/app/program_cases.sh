@@ -438,34 +438,56 @@ check_contact)
   ;;
 
 edge_multipliers)
-  # &contact_pair edge_multipliers (EXTRA: the Fig. 4(b) Q8 deck): 'corners'
-  # reaches the pair (the plan says so), and is refused with
-  # node-to-segment, with the weighted conditions and as an unknown value,
-  # naming the key; on a Q4 slave it is said to have no effect.
+  # &contact_pair edge_multipliers (EXTRA: the Fig. 4(b) Q8 deck, which
+  # selects 'tangential_corners'; base: the same deck with the key
+  # removed): 'corners' and 'tangential_corners' reach the pair (the plan
+  # says so), and are refused with node-to-segment, with the weighted
+  # conditions, 'tangential_corners' with the dual basis, and an unknown
+  # value, naming the key; on a Q4 slave they are said to have no effect,
+  # and 'tangential_corners' without friction too.
   deck=$(basename "$extra")
   cp "$(dirname "$extra")"/paper_q8.msh "$(dirname "$extra")"/paper_q4.msh "$work/"
-  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1', edge_multipliers = 'corners'/" "$extra" > "$work/$deck"
+  grep -q "edge_multipliers = 'tangential_corners'" "$extra" && pass "the Fig. 4(b) deck selects tangential_corners" \
+    || fail "the Fig. 4(b) deck does not select tangential_corners"
+  base="$work/base.nml"
+  sed -e "/edge_multipliers = 'tangential_corners'/d" "$extra" > "$base"
+  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1', edge_multipliers = 'corners'/" "$base" > "$work/$deck"
   run --check "$deck"
   expect_code 0
   expect_text "$work/stdout.txt" "P1 multipliers (linear over each quadratic slave edge, at its corners)" "the plan names the corner multipliers"
-  sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1'/" "$extra" > "$work/$deck"
+  cp "$base" "$work/$deck"
   run --check "$deck"
   expect_code 0
-  if grep -q "at its corners" "$work/stdout.txt"; then fail "the default plan speaks of corner multipliers"
+  if grep -q "at its corners\|at the corners" "$work/stdout.txt"; then fail "the default plan speaks of corner multipliers"
   else pass "the default keeps a multiplier at every edge node"; fi
+  cp "$extra" "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  expect_text "$work/stdout.txt" "P1 multipliers (linear, at the slave nodes), the tangential ones at the corners of each quadratic slave edge only" "the plan names the tangential corner multipliers"
   for bad in "method = 'node_to_segment', multiplier = 'P1', edge_multipliers = 'corners'" \
              "method = 'mortar', multiplier = 'P1', conditions = 'weighted', edge_multipliers = 'corners'" \
+             "method = 'node_to_segment', multiplier = 'P1', edge_multipliers = 'tangential_corners'" \
+             "method = 'mortar', multiplier = 'P1', conditions = 'weighted', edge_multipliers = 'tangential_corners'" \
+             "method = 'mortar', multiplier = 'dual', edge_multipliers = 'tangential_corners'" \
              "method = 'mortar', multiplier = 'P1', edge_multipliers = 'middle'"; do
-    sed -e "s/method = 'mortar', multiplier = 'P1'/$bad/" "$extra" > "$work/$deck"
+    sed -e "s/method = 'mortar', multiplier = 'P1'/$bad/" "$base" > "$work/$deck"
     run --check "$deck"
     expect_code 2
     expect_text "$work/stderr.txt" "edge_multipliers" "refused naming the key: $bad"
   done
   sed -e "s/method = 'mortar', multiplier = 'P1'/method = 'mortar', multiplier = 'P1', edge_multipliers = 'corners'/" \
-    -e "s/paper_q8.msh/paper_q4.msh/" "$extra" > "$work/$deck"
+    -e "s/paper_q8.msh/paper_q4.msh/" "$base" > "$work/$deck"
   run --check "$deck"
   expect_code 0
   expect_text "$work/stderr.txt" "edge_multipliers = 'corners' has no effect on a slave of 2-node edges" "the warning on a Q4 slave"
+  sed -e "s/paper_q8.msh/paper_q4.msh/" "$extra" > "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  expect_text "$work/stderr.txt" "edge_multipliers = 'tangential_corners' has no effect on a slave of 2-node edges" "the warning on a Q4 slave (tangential)"
+  sed -e "s/friction = 0.2/friction = 0.0/" "$extra" > "$work/$deck"
+  run --check "$deck"
+  expect_code 0
+  expect_text "$work/stderr.txt" "edge_multipliers = 'tangential_corners' has no effect without friction" "the warning without friction"
   ;;
 
 progress_live)
