@@ -608,6 +608,16 @@ contains
       call entry_forces(pair, nt)
     else
       do j = 1, pair%cs%m
+        ! An open row (lambda = tau = 0) adds zeros to its nodes' forces:
+        ! its nodes are only listed, in the same order (the energy sums
+        ! below run in it).
+        if (pair%work%lam(j) == 0.0_wp .and. pair%work%tau(j) == 0.0_wp) then
+          do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+            p = pair%cs%ent_node(e)
+            if (.not. pair%mark(p)) call first_touch(pair, p, nt)
+          end do
+          cycle
+        end if
         fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
         tvec = pair%work%tau(j)*pair%cs%tangent(:, j)
         do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
@@ -637,6 +647,12 @@ contains
     do t = 1, nt
       p = pair%touched(t)
       pair%mark(p) = .false.
+      ! A node without force (only open rows touch it) moves by zero and
+      ! adds zeros to every sum here: passed, without the gathers of its
+      ! state (issue #16, ninth pass); the others' sums run in the same
+      ! order.
+      if (pair%fc(1, p) == 0.0_wp .and. pair%fc(2, p) == 0.0_wp .and. &
+          pair%ft(1, p) == 0.0_wp .and. pair%ft(2, p) == 0.0_wp) cycle
       do c = 1, 2
         if (model%minv_dof(c, p) > 0.0_wp) then
           dx = dt*h*model%minv_dof(c, p)*pair%fc(c, p)/(1.0_wp + 0.5_wp*model%alpha(p)*h)
@@ -688,6 +704,14 @@ contains
     do j = 1, pair%cs%m
       lam = pair%work%lam(j)
       tau = pair%work%tau(j)
+      if (lam == 0.0_wp .and. tau == 0.0_wp) then
+        ! no force: the nodes listed only (apply_correction)
+        do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+          p = pair%cs%ent_node(e)
+          if (.not. pair%mark(p)) call first_touch(pair, p, nt)
+        end do
+        cycle
+      end if
       do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
         p = pair%cs%ent_node(e)
         if (.not. pair%mark(p)) call first_touch(pair, p, nt)
