@@ -74,6 +74,10 @@ module raccord_contact_pair
     integer(i8) :: failed_total = 0, iterations_total = 0, steps = 0
     real(wp) :: residual = 0.0_wp, residual_max = 0.0_wp
     integer(i8) :: clock_build = 0, clock_solve = 0
+    ! Search counters of this process, summed over its steps (search_summary):
+    ! slave items with candidates (nodes for node-to-segment, segments for
+    ! mortar), master segments in some candidate list, constraints built.
+    integer(i8) :: near_total = 0, listed_total = 0, rows_total = 0
     ! Initial overlap found at t = 0 (see measure_overlap).
     integer :: overlap_nodes = 0                   !< constraints whose gap at t = 0 is negative
     real(wp) :: overlap_max = 0.0_wp               !< largest overlap at t = 0 (length)
@@ -82,7 +86,7 @@ module raccord_contact_pair
     real(wp) :: overlap_energy = 0.0_wp            !< energy the first step's push-out gave the bodies
   end type contact_pair_t
 
-  public :: init_contact_pairs, enforce_contact
+  public :: init_contact_pairs, enforce_contact, search_summary
 
 contains
 
@@ -294,6 +298,9 @@ contains
         pair%verlet, pair%trib, pair%nodal_normal, pair%cand, pair%cs)
     end select
     m = pair%cs%m
+    pair%near_total = pair%near_total + pair%verlet%nnear
+    pair%listed_total = pair%listed_total + pair%verlet%nmnear
+    pair%rows_total = pair%rows_total + m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.
     do j = 1, m
       i = pair%cs%snode(j)
@@ -457,6 +464,23 @@ contains
       end do
     end subroutine load_nodes
   end subroutine enforce_pair
+
+  !> The search counters of a pair for the run summary: the rebuilds of the
+  !> candidate lists (raccord_contact_verlet) and, per step, the slave items
+  !> with candidates, the master segments listed and the constraints built,
+  !> over the steps of this process (after a restart, those since it).
+  function search_summary(pair) result(text)
+    type(contact_pair_t), intent(in) :: pair
+    character(len=:), allocatable :: text
+    real(wp) :: steps
+    steps = real(max(1_i8, pair%steps), wp)
+    text = 'candidate lists built ' // str(pair%verlet%rebuilds) // ' times in ' // str(pair%steps) // &
+      ' steps; per step ' // str(real(pair%near_total, wp)/steps, 4) // ' slave ' // &
+      trim(merge('segments', 'nodes   ', pair%verlet%by_segment)) // ' with list candidates of ' // &
+      str(merge(pair%slave%nseg, pair%slave%nnode, pair%verlet%by_segment)) // ', ' // &
+      str(real(pair%listed_total, wp)/steps, 4) // ' listed master segments of ' // str(pair%master%nseg) // &
+      ', ' // str(real(pair%rows_total, wp)/steps, 4) // ' constraints'
+  end function search_summary
 
   !> Mortar on 3-node slave edges: the multipliers live on the corners
   !> with friction and the paper's conditions (raccord_mortar_segments), so
