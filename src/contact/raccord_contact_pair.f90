@@ -614,18 +614,24 @@ contains
     type(state_t), intent(inout) :: state
     integer :: j, e, p, c, nt, t, jc
     real(wp) :: dt, dx, vold, dv, vd, dh, wc, wf, dd, dk, inc, fvec(2), tvec(2), h
+    logical :: fric
 
     dt = state%dt
     h = velocity_step(state)
     ! The last step's forces off: fc, ft are zero off this step's nodes
     ! (account_shared_nodes relies on it).
     ! (Component by component: the sections were two calls to memset per node.)
+    ! Frictionless (mu = 0 for the whole run), ft is never set and stays
+    ! zero: neither cleared nor read.
+    fric = pair%mu > 0.0_wp
     do t = 1, pair%ntouched
       p = pair%touched(t)
       pair%fc(1, p) = 0.0_wp
       pair%fc(2, p) = 0.0_wp
-      pair%ft(1, p) = 0.0_wp
-      pair%ft(2, p) = 0.0_wp
+      if (fric) then
+        pair%ft(1, p) = 0.0_wp
+        pair%ft(2, p) = 0.0_wp
+      end if
     end do
     nt = 0
     if (pair%cs%entry_dirs) then
@@ -675,8 +681,10 @@ contains
       ! adds zeros to every sum here: passed, without the gathers of its
       ! state (issue #16, ninth pass); the others' sums run in the same
       ! order.
-      if (pair%fc(1, p) == 0.0_wp .and. pair%fc(2, p) == 0.0_wp .and. &
-          pair%ft(1, p) == 0.0_wp .and. pair%ft(2, p) == 0.0_wp) cycle
+      if (pair%fc(1, p) == 0.0_wp .and. pair%fc(2, p) == 0.0_wp) then
+        if (.not. fric) cycle
+        if (pair%ft(1, p) == 0.0_wp .and. pair%ft(2, p) == 0.0_wp) cycle
+      end if
       do c = 1, 2
         if (model%minv_dof(c, p) > 0.0_wp) then
           dx = dt*h*model%minv_dof(c, p)*pair%fc(c, p)/(1.0_wp + 0.5_wp*model%alpha(p)*h)
@@ -705,7 +713,7 @@ contains
           inc = 0.5_wp*(state%u_next(c, p) - state%u_prev(c, p))
         end if
         wc = wc - pair%fc(c, p)*inc
-        wf = wf - pair%ft(c, p)*inc
+        if (fric) wf = wf - pair%ft(c, p)*inc
       end do
     end do
     pair%ntouched = nt
@@ -759,7 +767,9 @@ contains
     ! component by component: the sections were two memset calls per node
     pair%fc(1, p) = 0.0_wp
     pair%fc(2, p) = 0.0_wp
-    pair%ft(1, p) = 0.0_wp
-    pair%ft(2, p) = 0.0_wp
+    if (pair%mu > 0.0_wp) then   ! frictionless: ft stays zero (apply_correction)
+      pair%ft(1, p) = 0.0_wp
+      pair%ft(2, p) = 0.0_wp
+    end if
   end subroutine first_touch
 end module raccord_contact_pair
