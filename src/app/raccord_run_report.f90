@@ -12,7 +12,7 @@ module raccord_run_report
   use raccord_state, only: state_t
   use raccord_time_step, only: time_plan_t
   use raccord_output, only: output_t, wall_seconds
-  use raccord_contact_pair, only: contact_pair_t
+  use raccord_contact_pair, only: contact_pair_t, search_summary
   use raccord_step_trial, only: step_cost_t, measure_step_cost
   use raccord_scene, only: METHOD_NTS, MULT_P0, MULT_P1, MULT_DUAL
   use raccord_material, only: KIN_FINITE, MAT_J2, kinematics_name, material_name, volumetric_name
@@ -291,6 +291,7 @@ contains
         str(real(pairs(k)%iterations_total, wp)/real(max(1_i8, pairs(k)%steps), wp), 3) // &
         ' active-set iterations per step, largest residual ' // str(pairs(k)%residual_max, 3) // ', ' // &
         str(pairs(k)%failed_total) // ' unconverged steps')
+      call log_info('raccord', 'contact pair ' // str(k) // ' search: ' // search_summary(pairs(k)))
     end do
   end subroutine report_summary
 end module raccord_run_report

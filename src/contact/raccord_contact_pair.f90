@@ -74,6 +74,10 @@ module raccord_contact_pair
     integer(i8) :: failed_total = 0, iterations_total = 0, steps = 0
     real(wp) :: residual = 0.0_wp, residual_max = 0.0_wp
     integer(i8) :: clock_build = 0, clock_solve = 0
+    ! Search counters of this process, summed over its steps (search_summary):
+    ! slave items with candidates (nodes for node-to-segment, segments for
+    ! mortar), master segments in some candidate list, constraints built.
+    integer(i8) :: near_total = 0, listed_total = 0, rows_total = 0
     ! Initial overlap found at t = 0 (see measure_overlap).
     integer :: overlap_nodes = 0                   !< constraints whose gap at t = 0 is negative
     real(wp) :: overlap_max = 0.0_wp               !< largest overlap at t = 0 (length)
@@ -82,7 +86,7 @@ module raccord_contact_pair
     real(wp) :: overlap_energy = 0.0_wp            !< energy the first step's push-out gave the bodies
   end type contact_pair_t
 
-  public :: init_contact_pairs, enforce_contact
+  public :: init_contact_pairs, enforce_contact, search_summary
 
 contains
 
@@ -306,6 +310,9 @@ contains
         pair%verlet, pair%trib, pair%nodal_normal, pair%cand, pair%cs)
     end select
     m = pair%cs%m
+    pair%near_total = pair%near_total + pair%verlet%nnear
+    pair%listed_total = pair%listed_total + pair%verlet%nmnear
+    pair%rows_total = pair%rows_total + m
     ! Warm start: last step's sets; a newly met node enters if it would penetrate.
     do j = 1, m
       i = pair%cs%snode(j)
@@ -470,6 +477,23 @@ contains
     end subroutine load_nodes
   end subroutine enforce_pair
 
+  !> The search counters of a pair for the run summary: the rebuilds of the
+  !> candidate lists (raccord_contact_verlet) and, per step, the slave items
+  !> with candidates, the master segments listed and the constraints built,
+  !> over the steps of this process (after a restart, those since it).
+  function search_summary(pair) result(text)
+    type(contact_pair_t), intent(in) :: pair
+    character(len=:), allocatable :: text
+    real(wp) :: steps
+    steps = real(max(1_i8, pair%steps), wp)
+    text = 'candidate lists built ' // str(pair%verlet%rebuilds) // ' times in ' // str(pair%steps) // &
+      ' steps; per step ' // str(real(pair%near_total, wp)/steps, 4) // ' slave ' // &
+      trim(merge('segments', 'nodes   ', pair%verlet%by_segment)) // ' with list candidates of ' // &
+      str(merge(pair%slave%nseg, pair%slave%nnode, pair%verlet%by_segment)) // ', ' // &
+      str(real(pair%listed_total, wp)/steps, 4) // ' listed master segments of ' // str(pair%master%nseg) // &
+      ', ' // str(real(pair%rows_total, wp)/steps, 4) // ' constraints'
+  end function search_summary
+
   !> Mortar on 3-node slave edges: the multipliers live on the corners
   !> with friction and the paper's conditions (raccord_mortar_segments), so
   !> a mid node has no constraint of its own.
@@ -602,24 +626,40 @@ contains
     type(state_t), intent(inout) :: state
     integer :: j, e, p, c, nt, t, jc
     real(wp) :: dt, dx, vold, dv, vd, dh, wc, wf, dd, dk, inc, fvec(2), tvec(2), h
+    logical :: fric
 
     dt = state%dt
     h = velocity_step(state)
     ! The last step's forces off: fc, ft are zero off this step's nodes
     ! (account_shared_nodes relies on it).
     ! (Component by component: the sections were two calls to memset per node.)
+    ! Frictionless (mu = 0 for the whole run), ft is never set and stays
+    ! zero: neither cleared nor read.
+    fric = pair%mu > 0.0_wp
     do t = 1, pair%ntouched
       p = pair%touched(t)
       pair%fc(1, p) = 0.0_wp
       pair%fc(2, p) = 0.0_wp
-      pair%ft(1, p) = 0.0_wp
-      pair%ft(2, p) = 0.0_wp
+      if (fric) then
+        pair%ft(1, p) = 0.0_wp
+        pair%ft(2, p) = 0.0_wp
+      end if
     end do
     nt = 0
     if (pair%cs%entry_dirs) then
       call entry_forces(pair, nt)
     else
       do j = 1, pair%cs%m
+        ! An open row (lambda = tau = 0) adds zeros to its nodes' forces:
+        ! its nodes are only listed, in the same order (the energy sums
+        ! below run in it).
+        if (pair%work%lam(j) == 0.0_wp .and. pair%work%tau(j) == 0.0_wp) then
+          do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+            p = pair%cs%ent_node(e)
+            if (.not. pair%mark(p)) call first_touch(pair, p, nt)
+          end do
+          cycle
+        end if
         fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
         tvec = pair%work%tau(j)*pair%cs%tangent(:, j)
         do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
@@ -649,6 +689,14 @@ contains
     do t = 1, nt
       p = pair%touched(t)
       pair%mark(p) = .false.
+      ! A node without force (only open rows touch it) moves by zero and
+      ! adds zeros to every sum here: passed, without the gathers of its
+      ! state (issue #16, ninth pass); the others' sums run in the same
+      ! order.
+      if (pair%fc(1, p) == 0.0_wp .and. pair%fc(2, p) == 0.0_wp) then
+        if (.not. fric) cycle
+        if (pair%ft(1, p) == 0.0_wp .and. pair%ft(2, p) == 0.0_wp) cycle
+      end if
       do c = 1, 2
         if (model%minv_dof(c, p) > 0.0_wp) then
           dx = dt*h*model%minv_dof(c, p)*pair%fc(c, p)/(1.0_wp + 0.5_wp*model%alpha(p)*h)
@@ -677,7 +725,7 @@ contains
           inc = 0.5_wp*(state%u_next(c, p) - state%u_prev(c, p))
         end if
         wc = wc - pair%fc(c, p)*inc
-        wf = wf - pair%ft(c, p)*inc
+        if (fric) wf = wf - pair%ft(c, p)*inc
       end do
     end do
     pair%ntouched = nt
@@ -700,6 +748,14 @@ contains
     do j = 1, pair%cs%m
       lam = pair%work%lam(j)
       tau = pair%work%tau(j)
+      if (lam == 0.0_wp .and. tau == 0.0_wp) then
+        ! no force: the nodes listed only (apply_correction)
+        do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+          p = pair%cs%ent_node(e)
+          if (.not. pair%mark(p)) call first_touch(pair, p, nt)
+        end do
+        cycle
+      end if
       do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
         p = pair%cs%ent_node(e)
         if (.not. pair%mark(p)) call first_touch(pair, p, nt)
@@ -723,7 +779,9 @@ contains
     ! component by component: the sections were two memset calls per node
     pair%fc(1, p) = 0.0_wp
     pair%fc(2, p) = 0.0_wp
-    pair%ft(1, p) = 0.0_wp
-    pair%ft(2, p) = 0.0_wp
+    if (pair%mu > 0.0_wp) then   ! frictionless: ft stays zero (apply_correction)
+      pair%ft(1, p) = 0.0_wp
+      pair%ft(2, p) = 0.0_wp
+    end if
   end subroutine first_touch
 end module raccord_contact_pair

@@ -26,7 +26,8 @@ module raccord_node_to_segment
   use raccord_shape, only: shape_line
   use raccord_contact_surface, only: contact_surface_t
   use raccord_contact_verlet, only: verlet_t, verlet_refresh, verlet_candidates
-  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row
+  use raccord_constraint_set, only: constraint_set_t, cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_reserve, &
+    cs_close_row
   use raccord_segment, only: project_on_segment, rotate_ccw, segment_point
   use raccord_mortar_segments, only: outward_normal, normal_field, project_along_field, cross2, NODE_XI
   implicit none
@@ -60,7 +61,7 @@ contains
     integer :: i, p, q, k, best, nen, a, tn, ncand
     real(wp) :: xp(2), xs(2, 3), s, foot(2), tang(2), dist, best_dist, best_s, n_m(2), g, sh(3), dsh(3)
     real(wp) :: nn(2, 3), dnf(2), sw(4), xa(2), xb(2), chord(2), bx, by, margin
-    integer :: k2, sn(4), t0, gap, tt, q0, qq
+    integer :: k2, sn(4), t0, gap, tt, q0, qq, e0, ne, f
     logical :: fold
     ! A foot up to 1 % of a segment beyond the end of the master chain still
     ! counts: a slave node that sits at the master's end (a common corner)
@@ -149,7 +150,29 @@ contains
         g = dot_product(xpred(:, p) - (sw(1)*xpred(:, sn(1)) + sw(2)*xpred(:, sn(2)) + sw(3)*xpred(:, sn(3)) + &
           sw(4)*xpred(:, sn(4))), n_m)
         if (g > reach .or. g < -reach) cycle near_nodes
-        call cs_put_row(cs, i, p, -n_m, trib(i), slave%s0(i), [p, sn], [-1.0_wp, sw], xpred, du)
+        ! The row of cs_put_row(..., [p, sn], [-1, sw], ...) written in
+        ! place (cs_reserve, cs_close_row): the slave node, then each master
+        ! node of nonzero weight in order, a repeated one merged into its
+        ! first entry; the same entries and sums, without the two arrays
+        ! built per node and the general row's copy (issue #16, ninth pass).
+        call cs_reserve(cs, 5)
+        e0 = cs%nent
+        ne = 1
+        cs%ent_node(e0 + 1) = p
+        cs%ent_w(e0 + 1) = -1.0_wp
+        entries: do a = 1, 4
+          if (sw(a) == 0.0_wp) cycle
+          do f = 1, ne
+            if (cs%ent_node(e0 + f) == sn(a)) then
+              cs%ent_w(e0 + f) = cs%ent_w(e0 + f) + sw(a)
+              cycle entries
+            end if
+          end do
+          ne = ne + 1
+          cs%ent_node(e0 + ne) = sn(a)
+          cs%ent_w(e0 + ne) = sw(a)
+        end do entries
+        call cs_close_row(cs, i, p, -n_m, trib(i), slave%s0(i), ne, xpred, du)
         cycle near_nodes
       end if
       do q = 1, ncand
