@@ -654,10 +654,7 @@ contains
         ! its nodes are only listed, in the same order (the energy sums
         ! below run in it).
         if (pair%work%lam(j) == 0.0_wp .and. pair%work%tau(j) == 0.0_wp) then
-          do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
-            p = pair%cs%ent_node(e)
-            if (.not. pair%mark(p)) call first_touch(pair, p, nt)
-          end do
+          call list_row_nodes(pair, j, nt)
           cycle
         end if
         fvec = pair%work%lam(j)*pair%cs%normal(:, j) + pair%work%tau(j)*pair%cs%tangent(:, j)
@@ -750,10 +747,7 @@ contains
       tau = pair%work%tau(j)
       if (lam == 0.0_wp .and. tau == 0.0_wp) then
         ! no force: the nodes listed only (apply_correction)
-        do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
-          p = pair%cs%ent_node(e)
-          if (.not. pair%mark(p)) call first_touch(pair, p, nt)
-        end do
+        call list_row_nodes(pair, j, nt)
         cycle
       end if
       do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
@@ -769,6 +763,19 @@ contains
 
   !> A node met for the first time this step by a row of apply_correction or
   !> entry_forces: listed among the touched nodes, its forces started at 0.
+  !> The nodes of row j that no row touched before this step, listed in
+  !> the row's order (first_touch), for a row that carries no force.
+  subroutine list_row_nodes(pair, j, nt)
+    type(contact_pair_t), intent(inout) :: pair
+    integer, intent(in) :: j
+    integer, intent(inout) :: nt
+    integer :: e, p
+    do e = pair%cs%row_ptr(j), pair%cs%row_ptr(j + 1) - 1
+      p = pair%cs%ent_node(e)
+      if (.not. pair%mark(p)) call first_touch(pair, p, nt)
+    end do
+  end subroutine list_row_nodes
+
   subroutine first_touch(pair, p, nt)
     type(contact_pair_t), intent(inout) :: pair
     integer, intent(in) :: p
