@@ -67,7 +67,7 @@ module raccord_constraint_set
     integer, allocatable :: tmid(:,:)         !< (2, m) owner row: the mid rows that take half its value
   end type constraint_set_t
 
-  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_put_row, cs_reserve, cs_close_row
+  public :: cs_start, cs_add_row, cs_add_entry, cs_finish_row, cs_reserve, cs_close_row
 
 contains
 
@@ -199,67 +199,6 @@ contains
     cs%slip_w(j) = slip
   end subroutine vector_sums
 
-  !> A whole row at once: cs_add_row, cs_add_entry for each (node(e),
-  !> w(e)) with w(e) /= 0 in order, and cs_finish_row, with the same sums
-  !> in the same order; a repeated node is merged by a search over this
-  !> row's entries only. With `merged` the entries are distinct already
-  !> (merged by the caller in the order cs_add_entry would have) and are
-  !> written as they are, zeros included. With cs%entry_dirs, `wv(:, e)` is
-  !> the vector weight of entry e (merged given), or, absent, w(e) normal.
-  subroutine cs_put_row(cs, snode, gnode, normal, length, coord, node, w, x, du, merged, wv)
-    type(constraint_set_t), intent(inout) :: cs
-    integer, intent(in) :: snode, gnode
-    real(wp), intent(in) :: normal(2), length, coord
-    integer, intent(in) :: node(:)
-    real(wp), intent(in) :: w(:)
-    real(wp), intent(in) :: x(:,:), du(:,:)
-    logical, intent(in), optional :: merged
-    real(wp), intent(in), optional :: wv(:,:)
-    integer :: e, f, j, e0
-    logical :: as_is
-    as_is = .false.
-    if (present(merged)) as_is = merged
-    call cs_add_row(cs, snode, gnode, normal, length, coord)
-    j = cs%m
-    if (cs%nent + size(node) > size(cs%ent_node)) call grow(cs, size(cs%snode), 2*size(cs%ent_node) + size(node))
-    e0 = cs%nent + 1
-    if (as_is) then
-      do e = 1, size(node)
-        cs%ent_node(cs%nent + e) = node(e)
-        cs%ent_w(cs%nent + e) = w(e)
-      end do
-      cs%nent = cs%nent + size(node)
-    else
-      entries: do e = 1, size(node)
-        if (w(e) == 0.0_wp) cycle
-        do f = e0, cs%nent
-          if (cs%ent_node(f) == node(e)) then
-            cs%ent_w(f) = cs%ent_w(f) + w(e)
-            cycle entries
-          end if
-        end do
-        cs%nent = cs%nent + 1
-        cs%ent_node(cs%nent) = node(e)
-        cs%ent_w(cs%nent) = w(e)
-      end do entries
-    end if
-    cs%row_ptr(j + 1) = cs%nent + 1
-    if (cs%entry_dirs) then
-      if (present(wv) .and. as_is) then
-        do e = 1, size(node)
-          cs%ent_v(:, e0 + e - 1) = wv(:, e)
-        end do
-      else
-        do e = e0, cs%nent
-          cs%ent_v(:, e) = cs%ent_w(e)*normal
-        end do
-      end if
-      call vector_sums(cs, j, x, du)
-      return
-    end if
-    call scalar_sums(cs, j, normal, x, du)
-  end subroutine cs_put_row
-
   !> Room for n more entries after the last (rows written in place by the
   !> caller, cs_close_row); the entries written so far are kept.
   subroutine cs_reserve(cs, n)
@@ -268,12 +207,13 @@ contains
     if (cs%nent + n > size(cs%ent_node)) call grow(cs, size(cs%snode), 2*size(cs%ent_node) + n)
   end subroutine cs_reserve
 
-  !> cs_put_row(..., merged=.true.) for a row whose n distinct entries the
-  !> caller has written in place, at cs%nent + 1 to cs%nent + n (ent_node,
-  !> ent_w and, with cs%entry_dirs, ent_v), within room taken by
-  !> cs_reserve: opens the row, takes them as they are, zeros included, and
-  !> closes it with the same sums in the same order, without the copy of the
-  !> entries through a caller's buffer (issue #16, eighth pass).
+  !> A whole row whose n distinct entries the caller has written in place,
+  !> at cs%nent + 1 to cs%nent + n (ent_node, ent_w and, with
+  !> cs%entry_dirs, ent_v), within room taken by cs_reserve: opens the row
+  !> (cs_add_row), takes the entries as they are, zeros included, and
+  !> closes it with the sums of cs_finish_row in the same order, without a
+  !> copy of the entries through a caller's buffer (issue #16, eighth pass;
+  !> node-to-segment and mortar rows since the ninth).
   subroutine cs_close_row(cs, snode, gnode, normal, length, coord, n, x, du)
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: snode, gnode

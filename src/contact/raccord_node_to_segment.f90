@@ -150,11 +150,12 @@ contains
         g = dot_product(xpred(:, p) - (sw(1)*xpred(:, sn(1)) + sw(2)*xpred(:, sn(2)) + sw(3)*xpred(:, sn(3)) + &
           sw(4)*xpred(:, sn(4))), n_m)
         if (g > reach .or. g < -reach) cycle near_nodes
-        ! The row of cs_put_row(..., [p, sn], [-1, sw], ...) written in
-        ! place (cs_reserve, cs_close_row): the slave node, then each master
-        ! node of nonzero weight in order, a repeated one merged into its
-        ! first entry; the same entries and sums, without the two arrays
-        ! built per node and the general row's copy (issue #16, ninth pass).
+        ! The row written in place (cs_reserve, cs_close_row): the slave
+        ! node with weight -1, then each master node of nonzero weight sw
+        ! in order, a repeated one merged into its first entry; the entries
+        ! and sums the general row (cs_add_entry per node) would give,
+        ! without two arrays built per node and their copy (issue #16,
+        ! ninth pass).
         call cs_reserve(cs, 5)
         e0 = cs%nent
         ne = 1
