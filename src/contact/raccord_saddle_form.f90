@@ -100,7 +100,7 @@ contains
     logical, intent(in) :: friction
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: n, kl, ku
-    integer :: j, i
+    integer :: j
     n = 0
     do j = 1, m
       w%vfirst(j) = n + 1
@@ -121,19 +121,29 @@ contains
       end if
     end do
     w%vfirst(m + 1) = n + 1
-    ! Rows of j couple to the unknowns of k = j - bw .. j + bw.
+    call band_extent(m, n, bw, w, kl, ku)
+  end subroutine layout
+
+  !> The half bandwidths kl, ku of the n unknowns numbered constraint by
+  !> constraint (w%vfirst), the rows of j coupling to the unknowns of
+  !> k = j - bw .. j + bw; the row profiles (fcol, lcol) reset, to be found
+  !> by the assembly (a contact row is a unit row). layout and layout_tc.
+  subroutine band_extent(m, n, bw, w, kl, ku)
+    integer, intent(in) :: m, n, bw
+    type(solver_work_t), intent(inout) :: w
+    integer, intent(out) :: kl, ku
+    integer :: j, i
     kl = 0
     ku = 0
     do j = 1, m
       ku = max(ku, w%vfirst(min(m, j + bw) + 1) - 1 - w%vfirst(j))
       kl = max(kl, w%vfirst(j + 1) - 1 - w%vfirst(max(1, j - bw)))
-      ! The row profiles are found by assemble (a contact row is a unit row).
       do i = w%vfirst(j), w%vfirst(j + 1) - 1
         w%fcol(i) = n + 1
         w%lcol(i) = 0
       end do
     end do
-  end subroutine layout
+  end subroutine band_extent
 
   !> The banded linear system for the current sets (unknowns of layout),
   !> rows scaled to unit largest entry (the blocks mix lengths and inverse
@@ -401,7 +411,7 @@ contains
     integer, intent(in) :: m, bw
     type(solver_work_t), intent(inout) :: w
     integer, intent(out) :: n, kl, ku
-    integer :: j, i
+    integer :: j
     n = 0
     do j = 1, m
       w%vfirst(j) = n + 1
@@ -422,16 +432,7 @@ contains
       end if
     end do
     w%vfirst(m + 1) = n + 1
-    kl = 0
-    ku = 0
-    do j = 1, m
-      ku = max(ku, w%vfirst(min(m, j + bw) + 1) - 1 - w%vfirst(j))
-      kl = max(kl, w%vfirst(j + 1) - 1 - w%vfirst(max(1, j - bw)))
-      do i = w%vfirst(j), w%vfirst(j + 1) - 1
-        w%fcol(i) = n + 1
-        w%lcol(i) = 0
-      end do
-    end do
+    call band_extent(m, n, bw, w, kl, ku)
   end subroutine layout_tc
 
   !> The banded system of solve_saddle_tc for the current sets (its header).
