@@ -10,7 +10,7 @@ module raccord_saddle_form
   use raccord_band_solver, only: band_solve
   use raccord_solver_work, only: solver_work_t, ST_OPEN, ST_STICK, ST_SLIP, ensure2, ensure1, ensure_i
   use raccord_solver_conditions, only: LEAST_INDEX_AFTER, least_index_change, update_sets, &
-    holds_to_roundoff, band_matvec, g1c, tested_sum
+    holds_to_roundoff, band_matvec, g1c, tested_sum, tested_row
   implicit none
   private
 
@@ -292,7 +292,7 @@ contains
     type(solver_work_t), intent(inout) :: w
     logical, intent(out) :: same
     integer :: m, it, j, n, kl, ku, ldab, info, bw, s, a
-    real(wp) :: gcc, kcc
+    real(wp) :: gcc, kcc, wa
 
     m = cs%m
     same = .false.
@@ -310,9 +310,9 @@ contains
         ! diagonals G1~ = T' G1 T, Ktt~ = T' Ktt T (as c_j of the rows)
         gcc = 0.0_wp
         kcc = 0.0_wp
-        call diag_sum(j, 1.0_wp)
-        do s = 1, 2
-          if (cs%tmid(s, j) > 0) call diag_sum(cs%tmid(s, j), 0.5_wp)
+        do s = 0, 2
+          call tested_row(cs, j, s, a, wa)
+          if (a > 0) call diag_sum(a, wa)
         end do
         w%ct(j) = 0.0_wp
         if (kcc > 0.0_wp) w%ct(j) = gcc**2/(dt*dt*kcc)
@@ -390,14 +390,8 @@ contains
       integer :: k, ss
       real(wp) :: wk
       do ss = 0, 2
-        if (ss == 0) then
-          k = j
-          wk = 1.0_wp
-        else
-          k = cs%tmid(ss, j)
-          wk = 0.5_wp
-          if (k <= 0) cycle
-        end if
+        call tested_row(cs, j, ss, k, wk)
+        if (k <= 0) cycle
         gcc = gcc + wi*wk*g1c(cs, i, k)
         if (abs(k - i) <= w%kb) kcc = kcc + wi*wk*w%ktt(k - i, i)
       end do
@@ -475,7 +469,7 @@ contains
       r = w%var(3, j)
       w%rhs(r) = 0.0_wp
       do s = 0, 2
-        call tested_row(s, i, wi)
+        call tested_row(cs, j, s, i, wi)
         if (i <= 0) cycle
         do k = max(1, i - bw), min(m, i + bw)
           call put_t(r, 4, k, wi*g1c(cs, k, i))
@@ -491,7 +485,7 @@ contains
       r = w%var(4, j)
       w%rhs(r) = 0.0_wp
       do s = 0, 2
-        call tested_row(s, i, wi)
+        call tested_row(cs, j, s, i, wi)
         if (i <= 0) cycle
         do k = max(1, i - cs%g1_band), min(m, i + cs%g1_band)
           call put_t(r, 3, k, wi*g1c(cs, i, k))
@@ -507,20 +501,6 @@ contains
     end do
     call scale_rows(n, kl, ku, w)
   contains
-    !> Row i of the test of owner j and its weight: s = 0 the owner, s = 1,
-    !> 2 its mid rows (i = 0: none).
-    subroutine tested_row(ss, ii, ww)
-      integer, intent(in) :: ss
-      integer, intent(out) :: ii
-      real(wp), intent(out) :: ww
-      if (ss == 0) then
-        ii = j
-        ww = 1.0_wp
-      else
-        ii = cs%tmid(ss, j)
-        ww = 0.5_wp
-      end if
-    end subroutine tested_row
     !> a times the tangential unknown (v = 3: tau, v = 4: gt) of row kk,
     !> through T: its own, or half of each of its corners'
     subroutine put_t(i0, v, kk, aa)

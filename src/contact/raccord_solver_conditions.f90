@@ -18,7 +18,7 @@ module raccord_solver_conditions
   !> (least_index_change; saddle form and banded friction form).
   integer, parameter, public :: LEAST_INDEX_AFTER = 30
   public :: least_index_change, update_sets, condition_residual, band_matvec, g1_at, g1c
-  public :: holds_to_roundoff, tested_sum
+  public :: holds_to_roundoff, tested_sum, tested_row
 
 contains
 
@@ -188,16 +188,35 @@ contains
     r = max(r, 0.0_wp)
   end function condition_residual
 
+  !> Row i of the test T' of owner row j of tangential corner multipliers
+  !> (cs%tcorners) and its weight wi: s = 0 the owner itself (1), s = 1, 2
+  !> the mid rows that take its value (1/2); i = 0 where there is none.
+  pure subroutine tested_row(cs, j, s, i, wi)
+    type(constraint_set_t), intent(in) :: cs
+    integer, intent(in) :: j, s
+    integer, intent(out) :: i
+    real(wp), intent(out) :: wi
+    if (s == 0) then
+      i = j
+      wi = 1.0_wp
+    else
+      i = max(cs%tmid(s, j), 0)
+      wi = 0.5_wp
+    end if
+  end subroutine tested_row
+
   !> (T' v)_j for an owner row j of tangential corner multipliers
   !> (cs%tcorners): v_j plus half of v on each mid row that takes its value.
   pure real(wp) function tested_sum(cs, v, j) result(t)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: v(:)
     integer, intent(in) :: j
-    integer :: s
+    integer :: s, i
+    real(wp) :: wi
     t = v(j)
     do s = 1, 2
-      if (cs%tmid(s, j) > 0) t = t + 0.5_wp*v(cs%tmid(s, j))
+      call tested_row(cs, j, s, i, wi)
+      if (i > 0) t = t + wi*v(i)
     end do
   end function tested_sum
 
