@@ -157,8 +157,6 @@ contains
     end do
   end subroutine cs_finish_row
 
-  !> Weighted gap and slip of row j from the entries' vector weights:
-  !> g_w = sum_p W_jp . x_p, s_w = sum_p W^perp_jp . du_p (module header).
   !> The row's weighted gap and slip, g_w = sum_e w_e x_e . n and
   !> s_w = sum_e w_e du_e . t with t = (n_2, -n_1), for rows of scalar
   !> weights (vector_sums for per-entry directions).
@@ -180,6 +178,8 @@ contains
     cs%slip_w(j) = slip
   end subroutine scalar_sums
 
+  !> Weighted gap and slip of row j from the entries' vector weights:
+  !> g_w = sum_p W_jp . x_p, s_w = sum_p W^perp_jp . du_p (module header).
   subroutine vector_sums(cs, j, x, du)
     type(constraint_set_t), intent(inout) :: cs
     integer, intent(in) :: j

@@ -761,8 +761,6 @@ contains
     end do
   end subroutine entry_forces
 
-  !> A node met for the first time this step by a row of apply_correction or
-  !> entry_forces: listed among the touched nodes, its forces started at 0.
   !> The nodes of row j that no row touched before this step, listed in
   !> the row's order (first_touch), for a row that carries no force.
   subroutine list_row_nodes(pair, j, nt)
@@ -776,6 +774,8 @@ contains
     end do
   end subroutine list_row_nodes
 
+  !> A node met for the first time this step by a row of apply_correction or
+  !> entry_forces: listed among the touched nodes, its forces started at 0.
   subroutine first_touch(pair, p, nt)
     type(contact_pair_t), intent(inout) :: pair
     integer, intent(in) :: p
