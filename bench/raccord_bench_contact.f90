@@ -77,7 +77,7 @@ contains
     character(len=*), intent(in) :: what, text
     write(*, '(a)') 'raccord_bench_contact: ' // what // ' must be a whole number >= ' // &
       merge('1', '2', what == 'steps') // ', not ''' // trim(text) // '''; see --help'
-    error stop 1
+    stop 1   ! (the message is printed above; ERROR STOP would add a backtrace)
   end subroutine bad_argument
 
   subroutine run_case(method, mu, nslave)

@@ -94,7 +94,7 @@ contains
   subroutine refuse(msg)
     character(len=*), intent(in) :: msg
     write(error_unit, '(a)') 'raccord_bench_ratio: ' // msg
-    error stop 2
+    stop 2   ! (the message is printed above; ERROR STOP would add a backtrace)
   end subroutine refuse
 
   pure subroutine sort(a)

@@ -6,7 +6,8 @@
 set -eu
 bench=$1
 "$bench" --help | grep -q '^usage: raccord_bench_contact' || { echo "bench_contact_smoke: --help gives no usage"; exit 1; }
-if "$bench" many > /dev/null 2>&1; then echo "bench_contact_smoke: a bad step count was accepted"; exit 1; fi
+if err=$("$bench" many 2>&1); then echo "bench_contact_smoke: a bad step count was accepted"; exit 1; fi
+if echo "$err" | grep -q -e Backtrace -e 'ERROR STOP'; then echo "bench_contact_smoke: a bad argument printed a backtrace: $err"; exit 1; fi
 out=$("$bench" 20 40) || { echo "bench_contact_smoke: the run failed"; exit 1; }
 echo "$out"
 echo "$out" | awk '

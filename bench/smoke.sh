@@ -11,6 +11,15 @@
 # asserts no speed.
 set -eu
 bench=$1
+# A bad argument: the message and exit 1, no ERROR STOP backtrace; --clock
+# cpu without --threads times one thread, with --threads 2 it is refused.
+if err=$("$bench" --clock cpu --threads 2 100 2>&1); then echo "bench_smoke: --clock cpu --threads 2 was accepted"; exit 1; fi
+echo "$err" | grep -q 'give --threads 1' || { echo "bench_smoke: no message for --clock cpu --threads 2: $err"; exit 1; }
+if echo "$err" | grep -q -e Backtrace -e 'ERROR STOP'; then echo "bench_smoke: a bad argument printed a backtrace: $err"; exit 1; fi
+cpu=$(OPENBLAS_NUM_THREADS=1 "$bench" --clock cpu --type q4 --repeat 1 --min-time 0.01 200) || {
+  echo "bench_smoke: --clock cpu without --threads failed"; exit 1; }
+echo "$cpu" | awk '$1 == "Q4" { n++; if ($4 != 1) bad = 1 } END { exit (n == 1 && !bad) ? 0 : 1 }' || {
+  echo "bench_smoke: --clock cpu without --threads should time one thread, one line:"; echo "$cpu"; exit 1; }
 out=$(OPENBLAS_NUM_THREADS=1 "$bench" --type all --kinematics all --material all --threads 2 --repeat 2 --min-time 0.01 2000) || {
   echo "bench_smoke: raccord_bench failed"; exit 1; }
 echo "$out"
