@@ -44,13 +44,27 @@ for d in "$@"; do
   [ -f "$d" ] || { echo "contact-share: no deck $d" >&2; exit 2; }
 done
 # the contact modules' symbols (gfortran: __<module>_MOD_<name>; internal
-# procedures such as mortar's corner_xi appear by their own name)
+# procedures appear by their own name: corner_xi here, the others found by
+# their place in the program, below)
 CONTACT='contact_verlet|contact_search|contact_surface|raccord_mortar|mortar_segments|node_to_segment|raccord_segment|constraint_set|corner_xi|contact_pair|multiplier_solver|band_solver|delassus|_form_MOD|solver_|g1_runs'
 LEFT_OUT='memset|memmove'
 have_perf=0
 if command -v perf >/dev/null 2>&1 && perf record -q -e cpu-clock -o /dev/null true >/dev/null 2>&1; then have_perf=1; fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/contact-share.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
+# Local symbols without a module name (gfortran's internal procedures,
+# put.0.isra.0 of the saddle form, and the clones gcc makes of them) are
+# counted with the module whose procedures follow them in the program
+# (gcc emits a module's internal procedures just before its own): the
+# contact ones listed in $work/local.txt. Without nm, by name only.
+: >"$work/local.txt"
+if command -v nm >/dev/null 2>&1; then
+  nm -n --defined-only "$bin" 2>/dev/null | awk -v pat="$CONTACT" '
+    $2 ~ /^[tT]$/ {
+      if ($3 ~ /_MOD_/) { for (i = 1; i <= n; i++) if ($3 ~ pat) print pend[i]; n = 0 }
+      else pend[++n] = $3
+    }' >"$work/local.txt"
+fi
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
 status=0
 if [ $have_perf -eq 1 ]; then
@@ -77,11 +91,12 @@ while [ "$r" -le "$rounds" ]; do
       } END { if (n >= 2) printf "%s + %s %%", s[1], s[2]; else printf "?" }' "$out/$name.log")
     if [ $have_perf -eq 1 ]; then
       perf report -i "$out.data" --stdio --no-children --sort symbol -n 2>/dev/null >"$out.report"
-      awk -v pat="$CONTACT" -v left="$LEFT_OUT" -v name="$name" -v r="$r" -v logs="$logshare" '
+      awk -v pat="$CONTACT" -v left="$LEFT_OUT" -v name="$name" -v r="$r" -v logs="$logshare" -v lf="$work/local.txt" '
+        BEGIN { while ((getline l < lf) > 0) local[l] = 1 }
         /^#/ || NF < 3 { next }
-        { n = $2 + 0; sym = $0 }
+        { n = $2 + 0; sym = $0; id = "" ; for (i = 1; i < NF; i++) if ($i == "[.]") { id = $(i + 1); break } }
         sym ~ left { next }
-        { all += n; if (sym ~ pat) c += n }
+        { all += n; if (sym ~ pat || (id in local)) c += n }
         END { if (all == 0) { print name ": no samples" > "/dev/stderr"; exit 1 }
               printf "%-34s %5d %9.2f %9.2f %7.1f%%   %s\n", name, r, all/1000, c/1000, 100*c/all, logs }' "$out.report" || status=1
     else
