@@ -1,9 +1,11 @@
 #!/bin/sh
 # The profile-guided contact build (tools/build-pgo.sh, CTest pgo_build):
-#   - bad usage exits 2, a bad RACCORD_PGO and RACCORD_PGO=USE without a
-#     profile stop the configure with a message naming the fix;
-#   - the quick build (-q) ends with a program, and its profile holds the
-#     contact sources only (the element kernels stay as in the plain build);
+#   - bad usage (an unknown option, a missing -t deck) exits 2; a bad
+#     RACCORD_PGO and RACCORD_PGO=USE without a profile stop the
+#     configure with a message naming the fix;
+#   - the quick build (-q, with a -t deck trained on too) ends with a
+#     program, and its profile holds the contact sources only (the element
+#     kernels stay as in the plain build);
 #   - that program and the test build's agree on a frictionless and a
 #     frictional scene to round-off: every history column (but the
 #     round-off energy balance) and every contact profile column within
@@ -27,6 +29,12 @@ rc=$?
 set -e
 [ $rc -eq 2 ] || fail "build-pgo.sh -x exited $rc, not 2"
 grep -q 'unknown option -x' "$work/usage.txt" || fail "no message for -x: $(cat "$work/usage.txt")"
+set +e
+sh "$src/tools/build-pgo.sh" -t "$work/none.nml" > "$work/usage2.txt" 2>&1
+rc=$?
+set -e
+[ $rc -eq 2 ] || fail "build-pgo.sh -t with a missing deck exited $rc, not 2"
+grep -q 'no such deck' "$work/usage2.txt" || fail "no message for a missing -t deck: $(cat "$work/usage2.txt")"
 if "$cmake" -S "$src" -B "$work/bad" -DCMAKE_BUILD_TYPE=Release -DRACCORD_PGO=maybe > "$work/bad.txt" 2>&1; then
   fail "RACCORD_PGO=maybe was configured"
 fi
@@ -38,7 +46,9 @@ fi
 grep -q 'no training profile' "$work/bad2.txt" || fail "no message for USE without a profile: $(tail -n 5 "$work/bad2.txt")"
 
 # The quick build.
-sh "$src/tools/build-pgo.sh" -q "$work/build" > "$work/build.txt" 2>&1 || { cat "$work/build.txt"; fail "build-pgo.sh -q failed"; }
+sh "$src/tools/build-pgo.sh" -q -t "$src/input/verification/patch/q4_nts_slave_upper.nml" "$work/build" \
+  > "$work/build.txt" 2>&1 || { cat "$work/build.txt"; fail "build-pgo.sh -q failed"; }
+grep -q 'trained on .*q4_nts_slave_upper.nml' "$work/build.txt" || fail "the -t deck was not trained on: $(cat "$work/build.txt")"
 [ -x "$work/build/raccord" ] || fail "no program $work/build/raccord"
 n=$(ls "$work/build/pgo-profile" | grep -c '\.gcda$' || true)
 [ "$n" -gt 0 ] || fail "no profile in $work/build/pgo-profile"
