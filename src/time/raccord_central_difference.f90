@@ -112,7 +112,7 @@ contains
     type(model_t), intent(in) :: model
     type(state_t), intent(inout) :: state
     real(wp) :: part(4, nseg), dpart(nseg), sums(4), h, dt
-    integer :: j, s
+    integer :: j
     logical :: first
 
     dt = state%dt
