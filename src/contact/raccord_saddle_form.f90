@@ -435,11 +435,12 @@ contains
     real(wp), intent(in) :: dt, mu
     integer, intent(in) :: bw, kl, ku
     type(solver_work_t), intent(inout) :: w
-    integer :: j, k, m, r, n, i, s
+    integer :: j, k, m, r, n, i, s, bc
     real(wp) :: dt2, wi
     m = cs%m
     dt2 = dt*dt
     n = w%vfirst(m + 1) - 1
+    bc = max(cs%g1_band, w%kb)     ! reach of the couplings G1 and K
     w%ab(1:2*kl + ku + 1, 1:n) = 0.0_wp
     do j = 1, m
       ! Gap definition: G1' gn - dt^2 (Knn lambda + Knt T tau_c) = g_w*.
@@ -466,12 +467,18 @@ contains
       if (cs%tcor(1, j) >= 0) cycle
       ! Owner j: its slip definition and tangential condition tested with
       ! T' (its own row and half of each mid row that takes its value).
+      ! Over the rows k that couple to the tested row i (G1 within
+      ! g1_band, K within kb): i lies up to two rows from j and T moves
+      ! k's unknowns up to two rows further, so the columns stay within
+      ! bw of j, the band layout_tc sized. (Over i +- bw, the zero terms
+      ! beyond the coupling were put out of the band: an index past w%ab
+      ! on the Q8 stick decks, and fcol/lcol widened past kl, ku.)
       r = w%var(3, j)
       w%rhs(r) = 0.0_wp
       do s = 0, 2
         call tested_row(cs, j, s, i, wi)
         if (i <= 0) cycle
-        do k = max(1, i - bw), min(m, i + bw)
+        do k = max(1, i - bc), min(m, i + bc)
           call put_t(r, 4, k, wi*g1c(cs, k, i))
           if (abs(i - k) <= w%kb) then
             call put(r, w%var(1, k), -wi*dt2*w%ktn(k - i, i))
