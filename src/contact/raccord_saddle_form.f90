@@ -329,7 +329,7 @@ contains
       call layout_tc(cs, m, bw, w, n, kl, ku)
       ldab = 2*kl + ku + 1
       call ensure2(w%ab, ldab, n)
-      call assemble_tc(cs, dt, mu, bw, kl, ku, w)
+      call assemble_tc(cs, dt, mu, bw0, kl, ku, w)
       call band_solve(n, kl, ku, w%ab(1:ldab, 1:n), w%ipiv, w%rhs, w%fcol, w%lcol, w%ext, info)
       if (info /= 0) then
         w%converged = .false.
@@ -430,22 +430,22 @@ contains
   end subroutine layout_tc
 
   !> The banded system of solve_saddle_tc for the current sets (its header).
-  subroutine assemble_tc(cs, dt, mu, bw, kl, ku, w)
+  subroutine assemble_tc(cs, dt, mu, bc, kl, ku, w)
     type(constraint_set_t), intent(in) :: cs
     real(wp), intent(in) :: dt, mu
-    integer, intent(in) :: bw, kl, ku
+    integer, intent(in) :: bc            !< half band of the couplings G1 and K: max(kb, g1_band)
+    integer, intent(in) :: kl, ku
     type(solver_work_t), intent(inout) :: w
-    integer :: j, k, m, r, n, i, s, bc
+    integer :: j, k, m, r, n, i, s
     real(wp) :: dt2, wi
     m = cs%m
     dt2 = dt*dt
     n = w%vfirst(m + 1) - 1
-    bc = max(cs%g1_band, w%kb)     ! reach of the couplings G1 and K
     w%ab(1:2*kl + ku + 1, 1:n) = 0.0_wp
     do j = 1, m
       ! Gap definition: G1' gn - dt^2 (Knn lambda + Knt T tau_c) = g_w*.
       r = w%var(1, j)
-      do k = max(1, j - bw), min(m, j + bw)
+      do k = max(1, j - bc), min(m, j + bc)
         if (w%var(2, k) > 0) call put(r, w%var(2, k), g1c(cs, k, j))
         if (abs(j - k) <= w%kb) then
           call put(r, w%var(1, k), -dt2*w%knn(k - j, j))
@@ -468,11 +468,12 @@ contains
       ! Owner j: its slip definition and tangential condition tested with
       ! T' (its own row and half of each mid row that takes its value).
       ! Over the rows k that couple to the tested row i (G1 within
-      ! g1_band, K within kb): i lies up to two rows from j and T moves
-      ! k's unknowns up to two rows further, so the columns stay within
-      ! bw of j, the band layout_tc sized. (Over i +- bw, the zero terms
-      ! beyond the coupling were put out of the band: an index past w%ab
-      ! on the Q8 stick decks, and fcol/lcol widened past kl, ku.)
+      ! g1_band, K within kb: bc): i lies up to two rows from j and T
+      ! moves k's unknowns up to two rows further, so the columns stay
+      ! within bc + 4 of j, the band layout_tc sized. (Over i +- (bc + 4),
+      ! the zero terms beyond the coupling were put out of the band: an
+      ! index past w%ab on the Q8 stick decks, and fcol/lcol widened past
+      ! kl, ku.)
       r = w%var(3, j)
       w%rhs(r) = 0.0_wp
       do s = 0, 2
